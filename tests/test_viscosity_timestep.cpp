@@ -1,0 +1,238 @@
+// Unit tests of common/viscosity.hpp (Monaghan, F eqs 2.16-2.17 / X eqs 11-12), common/timestep.hpp
+// (F eq 5.1), common/delta_sph.hpp (Marrone et al. 2011 as corrected in physics-notes) and the signal
+// speed of common/material.hpp (longitudinal wave speed of Weldox 460 E, validation.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <type_traits>
+#include <random>
+#include <vector>
+
+#include "common/delta_sph.hpp"
+#include "common/kernels.hpp"
+#include "common/material.hpp"
+#include "common/timestep.hpp"
+#include "common/viscosity.hpp"
+
+namespace {
+
+using namespace impactsph;
+
+template <class Real>
+class ViscosityTyped : public ::testing::Test {};
+using ViscosityReals = ::testing::Types<float, double>;
+TYPED_TEST_SUITE(ViscosityTyped, ViscosityReals);
+
+// ---- Artificial viscosity ----
+
+// Separating or sliding pairs get no viscosity (F 2.16: zero unless x_ij . u_ij < 0).
+TYPED_TEST(ViscosityTyped, ZeroForSeparatingAndTangentialPairs) {
+  using Real = TypeParam;
+  const ViscosityParams<Real> p{Real(1.0), Real(2.0)};
+  // Binary fractions (2^-10 m etc.), so that the tangential case has x.u = 0 exactly in float too.
+  const Vec3<Real> xij{Real(0.0009765625), Real(0.00048828125), Real(-0.000244140625)};
+  const Real h = Real(1.2e-3), c = Real(5000), rho = Real(7850);
+  EXPECT_EQ(monaghan_viscosity(p, xij, Vec3<Real>{Real(100), 0, 0}, h, c, rho), Real(0));      // separating
+  EXPECT_EQ(monaghan_viscosity(p, xij, Vec3<Real>{0, 0, 0}, h, c, rho), Real(0));                // at rest
+  EXPECT_EQ(monaghan_viscosity(p, xij, Vec3<Real>{Real(-0.5), Real(1), Real(0)}, h, c, rho), Real(0));  // tangential: v.x = 0
+}
+
+// Approaching pair by hand: x_ij = (1 mm, 0, 0), u_ij = (-100 m/s, 0, 0), h = 1.2 mm, c = 5000 m/s,
+// rho = 7850 kg/m^3. phi = h x.u/(r^2 + 0.01 h^2) = 1.2e-3 (-0.1)/(1e-6 + 1.44e-8) = -118.2965 m/s;
+// linear term -kappa1 c phi/rho = 75.3481 (m^5 kg^-1 s^-2 = Pa/(kg/m^3)^2), quadratic phi^2/rho = 1.782684.
+// Float: ~10 roundings, 1e-6 relative.
+TYPED_TEST(ViscosityTyped, ApproachingPairByHand) {
+  using Real = TypeParam;
+  const double tol = std::is_same<Real, double>::value ? 1e-12 : 1e-6;
+  const Vec3<Real> xij{Real(1e-3), 0, 0}, uij{Real(-100), 0, 0};
+  const Real h = Real(1.2e-3), c = Real(5000), rho = Real(7850);
+  const double lin = 75.34810826016195, quad = 1.782683949372917;
+  EXPECT_NEAR(double(monaghan_viscosity(ViscosityParams<Real>{Real(1), Real(0)}, xij, uij, h, c, rho)), lin, tol * lin);
+  EXPECT_NEAR(double(monaghan_viscosity(ViscosityParams<Real>{Real(0), Real(1)}, xij, uij, h, c, rho)), quad, tol * quad);
+  // F Table 3 style coefficients (kappa1 = 1.5, kappa2 = 2.5 as test values): the sum of the two terms.
+  EXPECT_NEAR(double(monaghan_viscosity(ViscosityParams<Real>{Real(1.5), Real(2.5)}, xij, uij, h, c, rho)),
+              1.5 * lin + 2.5 * quad, tol * lin * 2);
+  // Symmetric in the pair (x_ij and u_ij both change sign) and positive (repulsive).
+  EXPECT_EQ(monaghan_viscosity(ViscosityParams<Real>{Real(1), Real(1)}, -xij, -uij, h, c, rho),
+            monaghan_viscosity(ViscosityParams<Real>{Real(1), Real(1)}, xij, uij, h, c, rho));
+  EXPECT_GT(monaghan_viscosity(ViscosityParams<Real>{Real(1), Real(1)}, xij, uij, h, c, rho), Real(0));
+}
+
+// Naming (physics-notes): `linear` is F's kappa1 and X's Q2, the coefficient of the term LINEAR in the
+// velocity jump, which multiplies the sound speed; `quadratic` (F's kappa2, X's Q1) does not involve c.
+TYPED_TEST(ViscosityTyped, LinearCoefficientMultipliesSoundSpeed) {
+  using Real = TypeParam;
+  const double tol = 4 * std::numeric_limits<Real>::epsilon();
+  const Vec3<Real> xij{Real(0.6e-3), Real(-0.8e-3), Real(0.3e-3)}, uij{Real(-30), Real(50), Real(10)};
+  const Real h = Real(1.2e-3), rho = Real(7850);
+  const ViscosityParams<Real> lin{Real(1), Real(0)}, quad{Real(0), Real(1)};
+  const double l1 = monaghan_viscosity(lin, xij, uij, h, Real(4000), rho);
+  const double l2 = monaghan_viscosity(lin, xij, uij, h, Real(8000), rho);
+  EXPECT_NEAR(l2, 2 * l1, tol * l2);  // linear term proportional to c
+  const double l3 = monaghan_viscosity(lin, xij, Real(2) * uij, h, Real(4000), rho);
+  EXPECT_NEAR(l3, 2 * l1, tol * l3);  // ... and to the velocity jump
+  const double q1 = monaghan_viscosity(quad, xij, uij, h, Real(4000), rho);
+  const double q2 = monaghan_viscosity(quad, xij, uij, h, Real(8000), rho);
+  EXPECT_EQ(q1, q2);  // quadratic term independent of c
+  const double q3 = monaghan_viscosity(quad, xij, Real(2) * uij, h, Real(4000), rho);
+  EXPECT_NEAR(q3, 4 * q1, tol * q3);  // ... and quadratic in the velocity jump
+  // Default parameters are 1 and 1.
+  const ViscosityParams<Real> def{};
+  EXPECT_EQ(def.linear, Real(1));
+  EXPECT_EQ(def.quadratic, Real(1));
+}
+
+// ---- Time step ----
+
+TYPED_TEST(ViscosityTyped, CflTimeStepFormula) {
+  using Real = TypeParam;
+  // dt = C h/(c + |u|): 0.05 * 1.2e-3/(6144 + 300) s.
+  const double expected = 0.05 * 1.2e-3 / 6444.0;
+  EXPECT_NEAR(double(cfl_time_step(Real(0.05), Real(1.2e-3), Real(6144), Real(300))), expected,
+              4 * std::numeric_limits<Real>::epsilon() * expected);
+  // Linear in C and h, decreasing in c and |u|.
+  EXPECT_NEAR(double(cfl_time_step(Real(0.1), Real(1.2e-3), Real(6144), Real(300))), 2 * expected,
+              8 * std::numeric_limits<Real>::epsilon() * expected);
+  EXPECT_LT(cfl_time_step(Real(0.05), Real(1.2e-3), Real(6144), Real(600)),
+            cfl_time_step(Real(0.05), Real(1.2e-3), Real(6144), Real(300)));
+  // At rest: C h / c.
+  EXPECT_NEAR(double(cfl_time_step(Real(0.05), Real(1e-3), Real(5000), Real(0))), 1e-8,
+              4 * std::numeric_limits<Real>::epsilon() * 1e-8);
+}
+
+// ---- delta-SPH ----
+
+// Uniform density with zero gradients: no diffusion.
+TYPED_TEST(ViscosityTyped, DeltaSphZeroForUniformDensity) {
+  using Real = TypeParam;
+  const Real h = Real(1.2e-3), V = Real(1e-9), rho = Real(7850);
+  const Vec3<Real> zero{0, 0, 0};
+  for (Vec3<Real> xij : {Vec3<Real>{Real(1e-3), 0, 0}, Vec3<Real>{Real(0.3e-3), Real(-0.9e-3), Real(0.5e-3)}}) {
+    const Vec3<Real> g = kernel_grad(KernelKind::WendlandC2, xij, h);
+    EXPECT_EQ(delta_sph_term(V, rho, rho, xij, zero, zero, g), Real(0));
+  }
+  // A coincident pair contributes nothing (and no NaN).
+  EXPECT_EQ(delta_sph_term(V, rho, Real(8000), zero, zero, zero, zero), Real(0));
+}
+
+// A linear density field with its exact gradient is not diffused: psi . x_ji = 2 (rho_j - rho_i)
+// - (g_i + g_j) . x_ji = 0 (the point of the renormalised-gradient correction; a wrong sign in either
+// term would give 4 (rho_j - rho_i)). double: cancellation of terms of size ~ |g| r ~ 1e3, 1e-10 relative.
+TEST(DeltaSph, ZeroForLinearDensityWithExactGradient) {
+  const double h = 1.2e-3, V = 1e-9;
+  const Vec3<double> g{2e5, -1e5, 3e5};  // kg/m^4
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(-1.2e-3, 1.2e-3);
+  for (int t = 0; t < 100; ++t) {
+    const Vec3<double> xi{u(gen), u(gen), u(gen)}, xj{u(gen), u(gen), u(gen)};
+    const Vec3<double> xij = xi - xj;
+    const double rho_i = 7850 + dot(g, xi), rho_j = 7850 + dot(g, xj);
+    const Vec3<double> gw = kernel_grad(KernelKind::WendlandC2, xij, h);
+    const double term = delta_sph_term(V, rho_i, rho_j, xij, g, g, gw);
+    // Scale of one half of psi . grad W: V 2 |rho_j - rho_i| |grad W| / r.
+    const double scale = V * 2 * std::abs(dot(g, xij)) * std::abs(kernel_grad_factor(KernelKind::WendlandC2, norm(xij), h));
+    EXPECT_NEAR(term, 0.0, 1e-10 * scale + 1e-300) << t;
+  }
+}
+
+// Pair term by hand, and its sign: with zero gradients, i denser than j, the term is
+// V 2 (rho_i - rho_j)/r^2 x_ij . F x_ij = 2 V F (rho_i - rho_j) < 0 (F < 0): density diffuses from i to j.
+TYPED_TEST(ViscosityTyped, DeltaSphPairByHandAndDiffusiveSign) {
+  using Real = TypeParam;
+  const Real h = Real(1.2e-3), V = Real(1e-9);
+  const Vec3<Real> xij{Real(0.6e-3), Real(0.8e-3), 0}, zero{0, 0, 0};
+  const Real F = kernel_grad_factor(KernelKind::WendlandC2, norm(xij), h);
+  const Vec3<Real> gw = F * xij;
+  const Real t = delta_sph_term(V, Real(7900), Real(7850), xij, zero, zero, gw);
+  const double expected = 2.0 * double(V) * double(F) * 50.0;
+  EXPECT_NEAR(double(t), expected, 10 * std::numeric_limits<Real>::epsilon() * std::abs(expected) * 7900 / 50);
+  EXPECT_LT(t, Real(0));
+  // With gradients: psi = 2 (rho_j - rho_i)(x_j - x_i)/r^2 - (g_i + g_j); the gradient part adds
+  // -V (g_i + g_j) . grad W.
+  const Vec3<Real> gi{Real(1e5), Real(-2e5), Real(3e4)}, gj{Real(-4e4), Real(1e5), Real(2e5)};
+  const Real t2 = delta_sph_term(V, Real(7900), Real(7850), xij, gi, gj, gw);
+  const double extra = -double(V) * double(dot(gi + gj, gw));
+  EXPECT_NEAR(double(t2), expected + extra, 1e-5 * (std::abs(expected) + std::abs(extra)));
+}
+
+// Antisymmetry. The vector psi_ij of F 2.18 / Marrone is symmetric in (i, j): both
+// (rho_j - rho_i)(x_j - x_i) and (g_i + g_j) are unchanged by the swap. What is antisymmetric, and what
+// conserves mass, is the pair term psi_ij . grad_i W_ij, because grad_j W_ji = -grad_i W_ij: the term of j
+// from i is exactly minus the term of i from j (equal volumes). Bitwise in both precisions (negation and
+// commutative additions are exact).
+TYPED_TEST(ViscosityTyped, DeltaSphPairTermIsAntisymmetric) {
+  using Real = TypeParam;
+  const Real h = Real(1.2e-3), V = Real(1e-9);
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> u(-1.2e-3, 1.2e-3), r(7700, 8000), g(-3e5, 3e5);
+  for (int t = 0; t < 50; ++t) {
+    const Vec3<Real> xij{Real(u(gen)), Real(u(gen)), Real(u(gen))};
+    const Vec3<Real> gi{Real(g(gen)), Real(g(gen)), Real(g(gen))}, gj{Real(g(gen)), Real(g(gen)), Real(g(gen))};
+    const Real ri = Real(r(gen)), rj = Real(r(gen));
+    const Vec3<Real> gw_ij = kernel_grad(KernelKind::WendlandC2, xij, h);
+    const Vec3<Real> gw_ji = kernel_grad(KernelKind::WendlandC2, -xij, h);
+    EXPECT_EQ(gw_ji.x, -gw_ij.x);
+    EXPECT_EQ(delta_sph_term(V, rj, ri, -xij, gj, gi, gw_ji), -delta_sph_term(V, ri, rj, xij, gi, gj, gw_ij)) << t;
+  }
+}
+
+// Hence the diffusion conserves mass: on a small lattice with random densities and gradients, the total
+// sum_i V_i sum_j V_j psi_ij . grad_i W_ij vanishes to rounding.
+TEST(DeltaSph, LatticeSumConservesMass) {
+  const double dx = 1e-3, h = 1.2 * dx, V = dx * dx * dx;
+  std::mt19937 gen(17);
+  std::uniform_real_distribution<double> r(7700, 8000), g(-3e5, 3e5);
+  std::vector<Vec3<double>> x, grad;
+  std::vector<double> rho;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 4; ++k) {
+        x.push_back({i * dx, j * dx, k * dx});
+        rho.push_back(r(gen));
+        grad.push_back({g(gen), g(gen), g(gen)});
+      }
+  double total = 0, magnitude = 0;
+  for (size_t i = 0; i < x.size(); ++i)
+    for (size_t j = 0; j < x.size(); ++j) {
+      if (i == j) continue;
+      const Vec3<double> xij = x[i] - x[j];
+      const double t = V * delta_sph_term(V, rho[i], rho[j], xij, grad[i], grad[j], kernel_grad(KernelKind::WendlandC2, xij, h));
+      total += t;
+      magnitude += std::abs(t);
+    }
+  EXPECT_GT(magnitude, 0.0);
+  EXPECT_NEAR(total, 0.0, 1e-13 * magnitude);
+}
+
+// ---- Signal speed (material.hpp) ----
+
+// Weldox 460 E (validation.md): E 200 GPa, nu 0.33, rho 7850: K = E/(3(1 - 2 nu)) = 196.08 GPa,
+// G = E/(2(1 + nu)) = 75.19 GPa. The elastic signal speed is the longitudinal c_L = sqrt((K + 4G/3)/rho)
+// = 6144 m/s; a hydrodynamic material gets the bulk speed 4998 m/s; shear speed sqrt(G/rho) = 3095 m/s.
+// Within 1 m/s (validation.md gives whole m/s).
+TYPED_TEST(ViscosityTyped, SignalSpeedIsLongitudinalWaveSpeedForWeldox) {
+  using Real = TypeParam;
+  const double E = 200e9, nu = 0.33, rho0 = 7850;
+  const double K = E / (3 * (1 - 2 * nu)), G = E / (2 * (1 + nu));
+  MaterialParams<Real> m;
+  m.eos.kind = EosKind::Linear;
+  m.eos.rho0 = Real(rho0);
+  m.eos.k1 = Real(K);
+  m.strength.kind = StrengthKind::Elastic;
+  m.strength.shear_modulus = Real(G);
+  Real c_bulk = 0;
+  eos_pressure(m.eos, m.eos.rho0, Real(0), c_bulk);
+  EXPECT_NEAR(double(c_bulk), 4998.0, 1.0);
+  EXPECT_NEAR(double(signal_speed(m, c_bulk, m.eos.rho0)), 6144.0, 1.0);
+  EXPECT_NEAR(double(signal_speed(m, c_bulk, m.eos.rho0)), std::sqrt((K + 4 * G / 3) / rho0),
+              1e-5 * 6144);  // the closed form itself, at float precision
+  EXPECT_NEAR(std::sqrt(G / rho0), 3095.0, 1.0);
+  m.strength.kind = StrengthKind::PerfectlyPlastic;
+  EXPECT_NEAR(double(signal_speed(m, c_bulk, m.eos.rho0)), 6144.0, 1.0);
+  m.strength.kind = StrengthKind::Hydrodynamic;
+  EXPECT_EQ(signal_speed(m, c_bulk, m.eos.rho0), c_bulk);
+}
+
+}  // namespace
