@@ -1,0 +1,86 @@
+// CaseSpec: a case file after parsing and validation, every value in SI units. Built by case_file.cpp
+// from TOML (see docs/case-files.md for the schema), turned into particles by scene.cpp.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "common/correction.hpp"
+#include "common/kernels.hpp"
+#include "common/material.hpp"
+#include "common/particle_set.hpp"
+#include "common/viscosity.hpp"
+
+namespace impactsph {
+
+struct MaterialSpec {
+  std::string name;
+  MaterialParams<double> params;
+};
+
+enum class Shape { Box, Cylinder };
+
+struct BodySpec {
+  std::string name;
+  std::string material;    // name of a MaterialSpec
+  int material_index = -1; // index into CaseSpec::materials
+  Shape shape = Shape::Box;
+  Vec3d box_min{0, 0, 0}, box_max{0, 0, 0};  // Box
+  Vec3d base{0, 0, 0};     // Cylinder: centre of the base face, m
+  int axis = 2;            // Cylinder: 0, 1, 2 for x, y, z
+  double radius = 0;       // Cylinder, m
+  double length = 0;       // Cylinder: extent along +axis from the base, m
+  Vec3d velocity{0, 0, 0}; // initial velocity, m/s
+};
+
+// Particles inside the region are clamped (velocity held at zero).
+struct FixedRegionSpec {
+  enum class Kind { Box, OutsideCylinder } kind = Kind::Box;
+  std::string body;        // restrict to this body; empty: any body
+  Vec3d box_min{0, 0, 0}, box_max{0, 0, 0};  // Box
+  Vec3d axis_point{0, 0, 0};  // OutsideCylinder: a point on the axis
+  int axis = 2;               // OutsideCylinder: axis direction
+  double radius = 0;          // OutsideCylinder: particles farther than this from the axis are fixed
+};
+
+// Mirror plane x_axis = position; the model lies on one side of it.
+struct SymmetryPlaneSpec {
+  int axis = 0;
+  double position = 0;
+};
+
+struct NumericsSpec {
+  double spacing = 0;          // particle spacing dx, m
+  KernelKind kernel = KernelKind::WendlandC2;
+  double h_factor = 1.2;       // h = h_factor * dx (X: CSLH = 1.2)
+  ViscosityParams<double> viscosity{1.0, 1.0};
+  double delta = 0.1;          // delta-SPH coefficient (F Table 3)
+  double cfl = 0.2;            // C_CFL of F eq 5.1
+  CorrectionParams<double> correction{};
+};
+
+struct TimeSpec {
+  double end = 0;                  // s
+  double output_interval = 0;      // observables (CSV) every this, s
+  double frame_interval = 0;       // VTU frames every this, s (0: same as output_interval)
+  double checkpoint_interval = 0;  // s (0: only at the end and when interrupted)
+};
+
+struct OutputSpec {
+  bool vtu = true;
+  bool csv = true;
+};
+
+struct CaseSpec {
+  std::string source_file;  // path of the case file, for messages
+  std::string name;
+  std::string description;
+  std::vector<MaterialSpec> materials;
+  std::vector<BodySpec> bodies;
+  std::vector<FixedRegionSpec> fixed;
+  std::vector<SymmetryPlaneSpec> symmetry;
+  NumericsSpec numerics;
+  TimeSpec time;
+  OutputSpec output;
+};
+
+}  // namespace impactsph

@@ -1,0 +1,650 @@
+// Case files (common/case_file.hpp): the schema of docs/case-files.md read into a CaseSpec, one test per
+// class of bad input (each asserting the key, a useful hint and the line), and override semantics.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "common/case_file.hpp"
+#include "common/errors.hpp"
+
+using impactsph::CaseError;
+using impactsph::CaseSpec;
+using impactsph::parse_case_string;
+
+namespace {
+
+// Two materials written in non-alphabetical order (file order must win), a box and a cylinder.
+const std::string kBase = R"toml(# test case
+[case]
+name = "test"
+description = "a plate and a projectile"
+
+[materials.steel]
+density = "7850 kg/m^3"
+eos = { kind = "linear", bulk_modulus = "160 GPa" }
+strength = { kind = "elastic", shear_modulus = "80 GPa" }
+
+[materials.copper]
+density = "8.93 g/cm^3"
+eos = { kind = "mie-gruneisen", c0 = "3940 m/s", s = 1.489, gamma0 = 2.02 }
+strength = { kind = "perfectly-plastic", youngs_modulus = "124 GPa", poisson_ratio = 0.34, yield_stress = "90 MPa" }
+specific_heat = "383 J/(kg K)"
+
+[[bodies]]
+name = "plate"
+material = "steel"
+shape = "box"
+min = ["0 mm", "0 mm", "0 mm"]
+max = ["10 mm", "10 mm", "2 mm"]
+
+[[bodies]]
+name = "projectile"
+material = "copper"
+shape = "cylinder"
+base = ["5 mm", "5 mm", "2 mm"]
+axis = "z"
+radius = "2 mm"
+length = "5 mm"
+velocity = "298 m/s"
+direction = [0, 0, -1]
+
+[numerics]
+spacing = "0.5 mm"
+
+[time]
+end = "20 us"
+output_interval = "1 us"
+)toml";
+
+// kBase with `from` replaced by `to` (which must be there, so a test cannot silently test nothing).
+std::string with(const std::string& from, const std::string& to, const std::string& base = kBase) {
+  const auto at = base.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: \"" << from << "\" is not in the case";
+  if (at == std::string::npos) return base;
+  std::string s = base;
+  s.replace(at, from.size(), to);
+  return s;
+}
+
+// 1-based line of the first line of `text` holding `part`.
+int line_of(const std::string& text, const std::string& part) {
+  const auto at = text.find(part);
+  EXPECT_NE(at, std::string::npos);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+}
+
+::testing::AssertionResult Contains(const std::string& text, const std::string& part) {
+  if (text.find(part) != std::string::npos) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "\"" << text << "\" does not contain \"" << part << "\"";
+}
+
+CaseError error_of(const std::string& toml, const std::vector<std::string>& overrides = {},
+                   const std::string& spacing = "") {
+  try {
+    parse_case_string(toml, "case.toml", overrides, spacing);
+  } catch (const CaseError& e) {
+    EXPECT_EQ(e.file(), "case.toml");
+    return e;
+  }
+  ADD_FAILURE() << "the case was accepted";
+  return CaseError("", 0, "", "");
+}
+
+// The common assertion: the key, a hint in the message, and the line (-1: do not check).
+void expect_error(const std::string& toml, const std::string& key, const std::string& hint, int line) {
+  const CaseError e = error_of(toml);
+  EXPECT_EQ(e.key(), key) << e.what();
+  EXPECT_TRUE(Contains(e.what(), hint));
+  if (line >= 0) {
+    EXPECT_EQ(e.line(), line) << e.what();
+  }
+}
+
+}  // namespace
+
+TEST(CaseFile, ReadsTheBaseCase) {
+  const CaseSpec s = parse_case_string(kBase, "case.toml");
+  EXPECT_EQ(s.source_file, "case.toml");
+  EXPECT_EQ(s.name, "test");
+  EXPECT_EQ(s.description, "a plate and a projectile");
+  ASSERT_EQ(s.materials.size(), 2u);
+  EXPECT_EQ(s.materials[0].name, "steel");  // file order, not the alphabetical order of toml::table
+  EXPECT_EQ(s.materials[1].name, "copper");
+
+  const auto& steel = s.materials[0].params;
+  EXPECT_EQ(steel.eos.kind, impactsph::EosKind::Linear);
+  EXPECT_DOUBLE_EQ(steel.eos.rho0, 7850);
+  EXPECT_DOUBLE_EQ(steel.eos.k1, 160e9);
+  EXPECT_EQ(steel.strength.kind, impactsph::StrengthKind::Elastic);
+  EXPECT_DOUBLE_EQ(steel.strength.shear_modulus, 80e9);
+  EXPECT_DOUBLE_EQ(steel.room_temperature, 293);
+  EXPECT_DOUBLE_EQ(steel.specific_heat, 0);
+
+  const auto& cu = s.materials[1].params;
+  EXPECT_NEAR(cu.eos.rho0, 8930, 1e-9);
+  EXPECT_EQ(cu.eos.kind, impactsph::EosKind::MieGruneisen);
+  EXPECT_DOUBLE_EQ(cu.eos.c0, 3940);
+  EXPECT_DOUBLE_EQ(cu.eos.s1, 1.489);
+  EXPECT_DOUBLE_EQ(cu.eos.gamma0, 2.02);
+  EXPECT_EQ(cu.strength.kind, impactsph::StrengthKind::PerfectlyPlastic);
+  EXPECT_NEAR(cu.strength.shear_modulus, 124e9 / (2 * 1.34), 1);
+  EXPECT_DOUBLE_EQ(cu.strength.yield_stress, 90e6);
+  EXPECT_DOUBLE_EQ(cu.specific_heat, 383);
+
+  ASSERT_EQ(s.bodies.size(), 2u);
+  EXPECT_EQ(s.bodies[0].shape, impactsph::Shape::Box);
+  EXPECT_EQ(s.bodies[0].material_index, 0);
+  EXPECT_DOUBLE_EQ(s.bodies[0].box_max.z, 2e-3);
+  EXPECT_DOUBLE_EQ(s.bodies[0].velocity.z, 0);
+  const auto& p = s.bodies[1];
+  EXPECT_EQ(p.shape, impactsph::Shape::Cylinder);
+  EXPECT_EQ(p.material, "copper");
+  EXPECT_EQ(p.material_index, 1);
+  EXPECT_EQ(p.axis, 2);
+  EXPECT_DOUBLE_EQ(p.radius, 2e-3);
+  EXPECT_DOUBLE_EQ(p.length, 5e-3);
+  EXPECT_DOUBLE_EQ(p.base.x, 5e-3);
+  EXPECT_DOUBLE_EQ(p.velocity.x, 0);
+  EXPECT_DOUBLE_EQ(p.velocity.z, -298);
+
+  EXPECT_DOUBLE_EQ(s.numerics.spacing, 0.5e-3);
+  EXPECT_EQ(s.numerics.kernel, impactsph::KernelKind::WendlandC2);
+  EXPECT_DOUBLE_EQ(s.numerics.h_factor, 1.2);
+  EXPECT_DOUBLE_EQ(s.numerics.viscosity.linear, 1.0);
+  EXPECT_DOUBLE_EQ(s.numerics.viscosity.quadratic, 1.0);
+  EXPECT_DOUBLE_EQ(s.numerics.delta, 0.1);
+  EXPECT_DOUBLE_EQ(s.numerics.cfl, 0.2);
+  EXPECT_DOUBLE_EQ(s.numerics.correction.max_condition, 1e3);
+  EXPECT_DOUBLE_EQ(s.time.end, 20e-6);
+  EXPECT_DOUBLE_EQ(s.time.output_interval, 1e-6);
+  EXPECT_DOUBLE_EQ(s.time.frame_interval, 1e-6);
+  EXPECT_DOUBLE_EQ(s.time.checkpoint_interval, 0);
+  EXPECT_TRUE(s.output.vtu);
+  EXPECT_TRUE(s.output.csv);
+  EXPECT_TRUE(s.fixed.empty());
+  EXPECT_TRUE(s.symmetry.empty());
+}
+
+TEST(CaseFile, ReadsOptionalSections) {
+  const std::string toml = kBase + R"(
+[output]
+vtu = false
+
+[[boundaries.fixed]]
+region = "outside-cylinder"
+axis = "z"
+axis_point = [0.005, 0.005, 0]
+radius = "4 mm"
+body = "plate"
+
+[[boundaries.fixed]]
+region = "box"
+min = ["0 mm", "0 mm", "0 mm"]
+max = ["1 mm", "10 mm", "2 mm"]
+
+[[boundaries.symmetry]]
+axis = "y"
+)";
+  const std::string t2 = with("spacing = \"0.5 mm\"",
+                              "spacing = \"0.5 mm\"\nkernel = \"cubic-spline\"\nh_factor = 1.5\ncfl = 0.3\n"
+                              "viscosity_linear = 0.5\nviscosity_quadratic = 2\ndelta = 0\ncorrection_max_condition = 50",
+                              with("output_interval = \"1 us\"",
+                                   "output_interval = \"1 us\"\nframe_interval = \"0.5 us\"\ncheckpoint_interval = \"10 us\"",
+                                   toml));
+  const CaseSpec s = parse_case_string(t2, "case.toml");
+  EXPECT_FALSE(s.output.vtu);
+  EXPECT_TRUE(s.output.csv);
+  ASSERT_EQ(s.fixed.size(), 2u);
+  EXPECT_EQ(s.fixed[0].kind, impactsph::FixedRegionSpec::Kind::OutsideCylinder);
+  EXPECT_EQ(s.fixed[0].body, "plate");
+  EXPECT_DOUBLE_EQ(s.fixed[0].radius, 4e-3);
+  EXPECT_DOUBLE_EQ(s.fixed[0].axis_point.y, 5e-3);
+  EXPECT_EQ(s.fixed[1].kind, impactsph::FixedRegionSpec::Kind::Box);
+  EXPECT_TRUE(s.fixed[1].body.empty());
+  ASSERT_EQ(s.symmetry.size(), 1u);
+  EXPECT_EQ(s.symmetry[0].axis, 1);
+  EXPECT_DOUBLE_EQ(s.symmetry[0].position, 0);
+  EXPECT_EQ(s.numerics.kernel, impactsph::KernelKind::CubicSpline);
+  EXPECT_DOUBLE_EQ(s.numerics.h_factor, 1.5);
+  EXPECT_DOUBLE_EQ(s.numerics.cfl, 0.3);
+  EXPECT_DOUBLE_EQ(s.numerics.viscosity.linear, 0.5);
+  EXPECT_DOUBLE_EQ(s.numerics.viscosity.quadratic, 2);
+  EXPECT_DOUBLE_EQ(s.numerics.delta, 0);
+  EXPECT_DOUBLE_EQ(s.numerics.correction.max_condition, 50);
+  EXPECT_DOUBLE_EQ(s.time.frame_interval, 0.5e-6);  // shorter than output_interval is fine
+  EXPECT_DOUBLE_EQ(s.time.checkpoint_interval, 10e-6);
+}
+
+TEST(CaseFile, OtherEosKindsAndDerivedBulkModulus) {
+  std::string t = with("eos = { kind = \"linear\", bulk_modulus = \"160 GPa\" }\n"
+                       "strength = { kind = \"elastic\", shear_modulus = \"80 GPa\" }",
+                       "eos = { kind = \"linear\" }\nstrength = { kind = \"elastic\", youngs_modulus = \"200 GPa\", "
+                       "poisson_ratio = 0.3 }\ndamage = { kind = \"none\" }\nroom_temperature = \"300 K\"");
+  CaseSpec s = parse_case_string(t, "case.toml");
+  EXPECT_NEAR(s.materials[0].params.eos.k1, 200e9 / (3 * 0.4), 1);
+  EXPECT_NEAR(s.materials[0].params.strength.shear_modulus, 200e9 / 2.6, 1);
+  EXPECT_DOUBLE_EQ(s.materials[0].params.room_temperature, 300);
+
+  t = with("eos = { kind = \"linear\", bulk_modulus = \"160 GPa\" }",
+           "eos = { kind = \"polynomial\", k1 = \"130.95 GPa\", k3 = \"-10 GPa\" }");
+  s = parse_case_string(t, "case.toml");
+  EXPECT_EQ(s.materials[0].params.eos.kind, impactsph::EosKind::Polynomial);
+  EXPECT_DOUBLE_EQ(s.materials[0].params.eos.k1, 130.95e9);
+  EXPECT_DOUBLE_EQ(s.materials[0].params.eos.k2, 0);
+  EXPECT_DOUBLE_EQ(s.materials[0].params.eos.k3, -10e9);
+
+  t = with("eos = { kind = \"linear\", bulk_modulus = \"160 GPa\" }\n"
+           "strength = { kind = \"elastic\", shear_modulus = \"80 GPa\" }",
+           "[materials.steel.eos]\nkind = \"gruneisen-cubic\"\nc0 = \"4029 m/s\"\ns1 = 1.23\ngamma0 = 1.54\na = 0.1\n"
+           "[materials.steel.strength]\nkind = \"hydrodynamic\"");
+  s = parse_case_string(t, "case.toml");
+  const auto& e = s.materials[0].params.eos;
+  EXPECT_EQ(e.kind, impactsph::EosKind::GruneisenCubic);
+  EXPECT_DOUBLE_EQ(e.c0, 4029);
+  EXPECT_DOUBLE_EQ(e.s1, 1.23);
+  EXPECT_DOUBLE_EQ(e.s2, 0);
+  EXPECT_DOUBLE_EQ(e.gamma0, 1.54);
+  EXPECT_DOUBLE_EQ(e.a, 0.1);
+  EXPECT_EQ(s.materials[0].params.strength.kind, impactsph::StrengthKind::Hydrodynamic);
+}
+
+TEST(CaseFile, VelocityForms) {
+  std::string t = with("velocity = \"298 m/s\"\ndirection = [0, 0, -1]", "velocity = [\"0 m/s\", \"0.1 km/s\", -300]");
+  CaseSpec s = parse_case_string(t, "case.toml");
+  EXPECT_DOUBLE_EQ(s.bodies[1].velocity.y, 100);
+  EXPECT_DOUBLE_EQ(s.bodies[1].velocity.z, -300);
+  t = with("direction = [0, 0, -1]", "direction = [3, 0, -4]");  // normalised
+  s = parse_case_string(t, "case.toml");
+  EXPECT_NEAR(s.bodies[1].velocity.x, 298 * 0.6, 1e-12);
+  EXPECT_NEAR(s.bodies[1].velocity.z, -298 * 0.8, 1e-12);
+}
+
+// ---- one test per class of bad input ----
+
+TEST(CaseFileErrors, InvalidToml) {
+  const std::string t = with("name = \"test\"", "name = \"test");
+  const CaseError e = error_of(t);
+  EXPECT_TRUE(Contains(e.what(), "not valid TOML"));
+  EXPECT_EQ(e.line(), line_of(t, "name = \"test"));
+}
+
+TEST(CaseFileErrors, UnknownKeyListsValidKeysAndSuggests) {
+  std::string t = with("density = \"7850 kg/m^3\"", "densty = \"7850 kg/m^3\"");
+  expect_error(t, "materials.steel.densty", "did you mean \"density\"?", line_of(t, "densty"));
+  expect_error(t, "materials.steel.densty", "valid keys: density, eos, strength", -1);
+
+  t = with("spacing = \"0.5 mm\"", "spacing = \"0.5 mm\"\nspacng = 1");
+  expect_error(t, "numerics.spacng", "did you mean \"spacing\"?", line_of(t, "spacng"));
+
+  t = kBase + "\n[outputs]\nvtu = true\n";
+  expect_error(t, "outputs", "did you mean \"output\"?", line_of(t, "[outputs]"));
+
+  // A key of another shape is unknown for this one.
+  t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]", "max = [\"10 mm\", \"10 mm\", \"2 mm\"]\nradius = \"1 mm\"");
+  expect_error(t, "bodies[0].radius", "valid keys: name, material, shape, velocity, direction, min, max",
+               line_of(t, "radius = \"1 mm\""));
+
+  t = with("s = 1.489", "s1 = 1.489");
+  expect_error(t, "materials.copper.eos.s1", "did you mean \"s\"?", line_of(t, "s1 = 1.489"));
+
+  t = with("strength = { kind = \"elastic\", shear_modulus = \"80 GPa\" }",
+           "strength = { kind = \"hydrodynamic\", shear_modulus = \"80 GPa\" }");
+  expect_error(t, "materials.steel.strength.shear_modulus", "valid keys: kind", -1);
+}
+
+TEST(CaseFileErrors, MissingRequiredKeys) {
+  std::string t = with("[time]\nend = \"20 us\"\noutput_interval = \"1 us\"\n", "");
+  expect_error(t, "time", "missing in the case file", 0);
+
+  t = with("end = \"20 us\"\n", "");
+  expect_error(t, "time.end", "expected a time such as \"20 us\"", line_of(t, "[time]"));
+
+  t = with("density = \"7850 kg/m^3\"\n", "");
+  expect_error(t, "materials.steel.density", "missing in a material", line_of(t, "[materials.steel]"));
+
+  t = with("name = \"test\"\n", "");
+  expect_error(t, "case.name", "missing", line_of(t, "[case]"));
+
+  t = with("shape = \"box\"\n", "");
+  expect_error(t, "bodies[0].shape", "expected one of \"box\", \"cylinder\"", -1);
+
+  t = with("radius = \"2 mm\"\n", "");
+  expect_error(t, "bodies[1].radius", "expected a length", -1);
+
+  t = with("eos = { kind = \"mie-gruneisen\", c0 = \"3940 m/s\", s = 1.489, gamma0 = 2.02 }",
+           "eos = { kind = \"mie-gruneisen\", c0 = \"3940 m/s\", s = 1.489 }");
+  expect_error(t, "materials.copper.eos.gamma0", "missing", -1);
+
+  t = with("eos = { kind = \"linear\", bulk_modulus = \"160 GPa\" }", "eos = { kind = \"linear\" }");
+  expect_error(t, "materials.steel.eos.bulk_modulus", "youngs_modulus and poisson_ratio", -1);
+
+  t = with("velocity = \"298 m/s\"\ndirection = [0, 0, -1]", "velocity = \"298 m/s\"");
+  expect_error(t, "bodies[1].direction", "needs direction", -1);
+}
+
+TEST(CaseFileErrors, WrongType) {
+  std::string t = with("spacing = \"0.5 mm\"", "spacing = true");
+  expect_error(t, "numerics.spacing", "not a boolean", line_of(t, "spacing = true"));
+
+  t = with("min = [\"0 mm\", \"0 mm\", \"0 mm\"]", "min = [\"0 mm\", \"0 mm\"]");
+  expect_error(t, "bodies[0].min", "has 2 entries; expected 3", line_of(t, "min = "));
+
+  t = with("min = [\"0 mm\", \"0 mm\", \"0 mm\"]", "min = \"0 mm\"");
+  expect_error(t, "bodies[0].min", "expected an array of 3 lengths", -1);
+
+  t = with("eos = { kind = \"linear\", bulk_modulus = \"160 GPa\" }", "eos = \"linear\"");
+  expect_error(t, "materials.steel.eos", "expected a table", line_of(t, "eos = \"linear\""));
+
+  t = kBase + "\n[output]\nvtu = \"yes\"\n";
+  expect_error(t, "output.vtu", "expected true or false", line_of(t, "vtu = \"yes\""));
+
+  t = with("name = \"plate\"", "name = 3");
+  expect_error(t, "bodies[0].name", "expected a string", -1);
+}
+
+TEST(CaseFileErrors, WrongUnits) {
+  std::string t = with("radius = \"2 mm\"", "radius = \"2 m/s\"");
+  expect_error(t, "bodies[1].radius", "\"2 m/s\" is a velocity; expected a length", line_of(t, "radius = "));
+
+  t = with("min = [\"0 mm\", \"0 mm\", \"0 mm\"]", "min = [\"0 mm\", \"0 GPa\", \"0 mm\"]");
+  expect_error(t, "bodies[0].min[1]", "is a pressure; expected a length", line_of(t, "min = "));
+
+  t = with("bulk_modulus = \"160 GPa\"", "bulk_modulus = \"160\"");  // a bare number is SI: 160 Pa
+  expect_error(t, "materials.steel.eos.bulk_modulus", "a bare number is in Pa", -1);
+
+  t = with("end = \"20 us\"", "end = \"20 uss\"");
+  expect_error(t, "time.end", "unknown unit \"uss\"", line_of(t, "end = "));
+
+  t = with("gamma0 = 2.02", "gamma0 = \"2.02 K\"");
+  expect_error(t, "materials.copper.eos.gamma0", "is a temperature", -1);
+}
+
+TEST(CaseFileErrors, NonPositiveSizes) {
+  std::string t = with("spacing = \"0.5 mm\"", "spacing = \"0 mm\"");
+  expect_error(t, "numerics.spacing", "must be greater than zero", line_of(t, "spacing = "));
+  t = with("spacing = \"0.5 mm\"", "spacing = -0.001");
+  expect_error(t, "numerics.spacing", "must be greater than zero (got -1 mm)", -1);
+  t = with("axis = \"z\"", "axis = \"Z\"");
+  expect_error(t, "bodies[1].axis", "did you mean \"z\"?", -1);
+  t = with("radius = \"2 mm\"", "radius = \"-2 mm\"");
+  expect_error(t, "bodies[1].radius", "must be greater than zero", -1);
+  t = with("length = \"5 mm\"", "length = 0");
+  expect_error(t, "bodies[1].length", "must be greater than zero", -1);
+  t = with("density = \"7850 kg/m^3\"", "density = \"0 kg/m^3\"");
+  expect_error(t, "materials.steel.density", "at least 1 kg/m^3", -1);
+  t = with("bulk_modulus = \"160 GPa\"", "bulk_modulus = \"-160 GPa\"");
+  expect_error(t, "materials.steel.eos.bulk_modulus", "at least 100 kPa", -1);
+  t = with("shear_modulus = \"80 GPa\"", "shear_modulus = \"0 GPa\"");
+  expect_error(t, "materials.steel.strength.shear_modulus", "at least 100 kPa", -1);
+}
+
+TEST(CaseFileErrors, BoxMinNotBelowMax) {
+  const std::string t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]", "max = [\"10 mm\", \"10 mm\", \"0 mm\"]");
+  expect_error(t, "bodies[0].max", "max[2] = 0 mm must be greater than min[2] = 0 mm", line_of(t, "max = "));
+}
+
+TEST(CaseFileErrors, UnknownKindsListValidOnes) {
+  std::string t = with("kind = \"mie-gruneisen\"", "kind = \"mie-grueneisen\"");
+  expect_error(t, "materials.copper.eos.kind", "did you mean \"mie-gruneisen\"?", line_of(t, "mie-grueneisen"));
+  expect_error(t, "materials.copper.eos.kind", "\"linear\", \"polynomial\", \"mie-gruneisen\", \"gruneisen-cubic\"", -1);
+  t = with("kind = \"elastic\"", "kind = \"plastic\"");
+  expect_error(t, "materials.steel.strength.kind", "\"hydrodynamic\", \"elastic\", \"perfectly-plastic\"", -1);
+  t = with("shape = \"box\"", "shape = \"sphere\"");
+  expect_error(t, "bodies[0].shape", "valid: \"box\", \"cylinder\", \"disk\", \"plate\"", line_of(t, "sphere"));
+  t = with("spacing = \"0.5 mm\"", "spacing = \"0.5 mm\"\nkernel = \"gaussian\"");
+  expect_error(t, "numerics.kernel", "\"wendland-c2\", \"cubic-spline\"", -1);
+  t = with("specific_heat", "damage = { kind = \"johnson-cook\" }\nspecific_heat");
+  expect_error(t, "materials.copper.damage.kind", "valid: \"none\"", -1);
+}
+
+TEST(CaseFileErrors, BodyNamesUnknownMaterial) {
+  const std::string t = with("material = \"copper\"", "material = \"coper\"");
+  expect_error(t, "bodies[1].material", "did you mean \"copper\"?", line_of(t, "coper"));
+  expect_error(t, "bodies[1].material", "defined materials: \"steel\", \"copper\"", -1);
+}
+
+TEST(CaseFileErrors, DuplicateBodyNames) {
+  const std::string t = with("name = \"projectile\"", "name = \"plate\"");
+  expect_error(t, "bodies[1].name", "duplicate body name \"plate\" (also bodies[0])", -1);
+}
+
+TEST(CaseFileErrors, BadNames) {
+  std::string t = with("name = \"plate\"", "name = \"the plate\"");
+  expect_error(t, "bodies[0].name", "may not contain", -1);
+  t = with("[materials.steel]", "[materials.\"st.eel\"]");
+  expect_error(t, "materials.st.eel", "may not contain", -1);
+}
+
+TEST(CaseFileErrors, MaterialConstantsOutOfRange) {
+  struct Case {
+    std::string from, to, key, hint;
+  };
+  const std::vector<Case> cases = {
+      {"density = \"7850 kg/m^3\"", "density = \"78500 kg/m^3\"", "materials.steel.density", "at most 30000 kg/m^3"},
+      {"poisson_ratio = 0.34", "poisson_ratio = 0.5", "materials.copper.strength.poisson_ratio", "less than 0.5"},
+      {"poisson_ratio = 0.34", "poisson_ratio = -1", "materials.copper.strength.poisson_ratio", "greater than -1"},
+      {"gamma0 = 2.02", "gamma0 = 6", "materials.copper.eos.gamma0", "at most 5"},
+      {"s = 1.489", "s = 0.2", "materials.copper.eos.s", "at least 0.5"},
+      {"c0 = \"3940 m/s\"", "c0 = \"30 km/s\"", "materials.copper.eos.c0", "at most 20000 m/s"},
+      {"c0 = \"3940 m/s\"", "c0 = 0", "materials.copper.eos.c0", "greater than 0 m/s"},
+      {"yield_stress = \"90 MPa\"", "yield_stress = \"-1 MPa\"", "materials.copper.strength.yield_stress",
+       "at least 100 kPa"},
+      {"yield_stress = \"90 MPa\"", "yield_stress = 490", "materials.copper.strength.yield_stress",
+       "a bare number is in Pa"},
+      {"shear_modulus = \"80 GPa\"", "shear_modulus = \"3000 GPa\"", "materials.steel.strength.shear_modulus",
+       "at most 2000 GPa"},
+      {"youngs_modulus = \"124 GPa\"", "youngs_modulus = \"2.5e12\"", "materials.copper.strength.youngs_modulus",
+       "at most 2000 GPa"},
+      {"specific_heat = \"383 J/(kg K)\"", "specific_heat = \"-1 J/kg/K\"", "materials.copper.specific_heat",
+       "greater than 0"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.to);
+    const std::string t = with(c.from, c.to);
+    expect_error(t, c.key, c.hint, line_of(t, c.to));
+  }
+}
+
+TEST(CaseFileErrors, ElasticConstantsGivenTwiceOrHalf) {
+  std::string t = with("youngs_modulus = \"124 GPa\", poisson_ratio = 0.34",
+                       "youngs_modulus = \"124 GPa\", poisson_ratio = 0.34, shear_modulus = \"46 GPa\"");
+  expect_error(t, "materials.copper.strength.youngs_modulus", "not both", -1);
+  t = with("youngs_modulus = \"124 GPa\", poisson_ratio = 0.34", "youngs_modulus = \"124 GPa\"");
+  expect_error(t, "materials.copper.strength.poisson_ratio", "needs poisson_ratio", -1);
+}
+
+TEST(CaseFileErrors, NumericsOutOfRange) {
+  struct Case {
+    std::string to, key, hint;
+  };
+  const std::vector<Case> cases = {
+      {"h_factor = 2.5", "numerics.h_factor", "at most 2"},
+      {"h_factor = 0.9", "numerics.h_factor", "at least 1"},
+      {"cfl = 0", "numerics.cfl", "greater than 0"},
+      {"cfl = 1.5", "numerics.cfl", "at most 1"},
+      {"delta = -0.1", "numerics.delta", "at least 0"},
+      {"viscosity_linear = -1", "numerics.viscosity_linear", "must not be negative"},
+      {"viscosity_quadratic = -1", "numerics.viscosity_quadratic", "must not be negative"},
+      {"correction_max_condition = 2", "numerics.correction_max_condition", "greater than 3"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.to);
+    const std::string t = with("spacing = \"0.5 mm\"", "spacing = \"0.5 mm\"\n" + c.to);
+    expect_error(t, c.key, c.hint, line_of(t, c.to));
+  }
+}
+
+TEST(CaseFileErrors, IntervalsLongerThanEnd) {
+  std::string t = with("output_interval = \"1 us\"", "output_interval = \"1 ms\"");
+  expect_error(t, "time.output_interval", "longer than time.end = 20 us", line_of(t, "output_interval"));
+  t = with("output_interval = \"1 us\"", "output_interval = \"1 us\"\nframe_interval = \"30 us\"");
+  expect_error(t, "time.frame_interval", "at most the end time", -1);
+  t = with("output_interval = \"1 us\"", "output_interval = \"1 us\"\ncheckpoint_interval = \"30 us\"");
+  expect_error(t, "time.checkpoint_interval", "longer than time.end", -1);
+  t = with("end = \"20 us\"", "end = \"0 us\"");
+  expect_error(t, "time.end", "greater than zero", -1);
+}
+
+TEST(CaseFileErrors, Boundaries) {
+  std::string t = kBase + "\n[[boundaries.symmetry]]\naxis = \"w\"\nposition = \"0 mm\"\n";
+  expect_error(t, "boundaries.symmetry[0].axis", "valid: \"x\", \"y\", \"z\"", line_of(t, "axis = \"w\""));
+  t = kBase + "\n[[boundaries.symmetry]]\naxis = \"x\"\n[[boundaries.symmetry]]\naxis = \"x\"\nposition = 0\n";
+  expect_error(t, "boundaries.symmetry[1].position", "the same plane as boundaries.symmetry[0]", -1);
+  t = kBase + "\n[[boundaries.symmetry]]\naxis = \"x\"\n[[boundaries.symmetry]]\naxis = \"x\"\nposition = \"10 mm\"\n";
+  EXPECT_EQ(parse_case_string(t, "case.toml").symmetry.size(), 2u);  // two planes on one axis: a channel
+  t = kBase + "\n[[boundaries.fixed]]\nregion = \"box\"\nbody = \"plat\"\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n";
+  expect_error(t, "boundaries.fixed[0].body", "did you mean \"plate\"?", line_of(t, "body = \"plat\""));
+  t = kBase + "\n[[boundaries.fixed]]\nregion = \"sphere\"\n";
+  expect_error(t, "boundaries.fixed[0].region", "\"box\", \"outside-cylinder\"", -1);
+  t = kBase + "\n[[boundaries.fixed]]\nregion = \"outside-cylinder\"\naxis = \"z\"\naxis_point = [0, 0, 0]\nradius = 0\n";
+  expect_error(t, "boundaries.fixed[0].radius", "greater than zero", -1);
+  t = kBase + "\n[boundaries]\nfixd = []\n";
+  expect_error(t, "boundaries.fixd", "did you mean \"fixed\"?", -1);
+}
+
+TEST(CaseFileErrors, VelocityGivenTwoWays) {
+  std::string t = with("velocity = \"298 m/s\"", "velocity = [0, 0, -298]");
+  expect_error(t, "bodies[1].direction", "not both", -1);
+  t = with("velocity = \"298 m/s\"", "velocity = \"-298 m/s\"");
+  expect_error(t, "bodies[1].velocity", "reverse the direction", -1);
+  t = with("direction = [0, 0, -1]", "direction = [0, 0, 0]");
+  expect_error(t, "bodies[1].direction", "zero vector", -1);
+}
+
+// ---- overrides ----
+
+TEST(CaseFileOverrides, ValuesAreParsedLikeTheFile) {
+  const CaseSpec s = parse_case_string(kBase, "case.toml",
+                                       {"projectile.velocity=400 m/s", "numerics.cfl=0.1", "time.end=40us",
+                                        "steel.density=7800 kg/m^3", "copper.eos.c0 = \"4000 m/s\"",
+                                        "case.name=renamed", "output.csv=false", "plate.max=[0.01, 0.01, 0.004]"});
+  EXPECT_DOUBLE_EQ(s.bodies[1].velocity.z, -400);
+  EXPECT_DOUBLE_EQ(s.numerics.cfl, 0.1);
+  EXPECT_DOUBLE_EQ(s.time.end, 40e-6);
+  EXPECT_DOUBLE_EQ(s.materials[0].params.eos.rho0, 7800);
+  EXPECT_DOUBLE_EQ(s.materials[1].params.eos.c0, 4000);
+  EXPECT_EQ(s.name, "renamed");
+  EXPECT_FALSE(s.output.csv);
+  EXPECT_DOUBLE_EQ(s.bodies[0].box_max.z, 4e-3);
+}
+
+TEST(CaseFileOverrides, QuotedAndExplicitForms) {
+  const CaseSpec s = parse_case_string(kBase, "case.toml",
+                                       {"bodies.projectile.velocity=\"350 m/s\"", "materials.steel.eos.bulk_modulus=170 GPa",
+                                        "projectile.direction=[1, 0, 0]"});
+  EXPECT_DOUBLE_EQ(s.bodies[1].velocity.x, 350);
+  EXPECT_DOUBLE_EQ(s.bodies[1].velocity.z, 0);
+  EXPECT_DOUBLE_EQ(s.materials[0].params.eos.k1, 170e9);
+}
+
+TEST(CaseFileOverrides, SpeedKeepsTheFilesDirection) {
+  const std::string t = with("velocity = \"298 m/s\"\ndirection = [0, 0, -1]",
+                             "velocity = [\"0 m/s\", \"-60 m/s\", \"-80 m/s\"]");
+  const CaseSpec s = parse_case_string(t, "case.toml", {"projectile.velocity=200 m/s"});
+  EXPECT_NEAR(s.bodies[1].velocity.x, 0, 1e-12);
+  EXPECT_NEAR(s.bodies[1].velocity.y, -120, 1e-12);
+  EXPECT_NEAR(s.bodies[1].velocity.z, -160, 1e-12);
+}
+
+TEST(CaseFileOverrides, NewKeysAreCreatedAndValidated) {
+  const CaseSpec s = parse_case_string(kBase, "case.toml", {"numerics.h_factor=1.3", "output.vtu=false"});
+  EXPECT_DOUBLE_EQ(s.numerics.h_factor, 1.3);
+  EXPECT_FALSE(s.output.vtu);
+
+  CaseError e = error_of(kBase, {"numerics.cfl=2"});
+  EXPECT_EQ(e.key(), "numerics.cfl");
+  EXPECT_EQ(e.line(), 0);
+  EXPECT_TRUE(Contains(e.what(), "at most 1"));
+  EXPECT_TRUE(Contains(e.what(), "set by override \"numerics.cfl=2\""));
+
+  e = error_of(kBase, {"numerics.cfll=0.1"});
+  EXPECT_EQ(e.key(), "numerics.cfll");
+  EXPECT_TRUE(Contains(e.what(), "did you mean \"cfl\"?"));
+
+  e = error_of(kBase, {"projectile.radius=3 m/s"});
+  EXPECT_EQ(e.key(), "bodies[1].radius");
+  EXPECT_TRUE(Contains(e.what(), "is a velocity"));
+}
+
+TEST(CaseFileOverrides, UnknownTargetsAreErrors) {
+  CaseError e = error_of(kBase, {"projectle.velocity=1"});
+  EXPECT_EQ(e.key(), "projectle.velocity=1");
+  EXPECT_TRUE(Contains(e.what(), "did you mean \"projectile\"?"));
+  EXPECT_TRUE(Contains(e.what(), "bodies: \"plate\", \"projectile\""));
+  EXPECT_TRUE(Contains(e.what(), "materials: \"copper\", \"steel\""));
+
+  e = error_of(kBase, {"bodies.rod.velocity=1"});
+  EXPECT_TRUE(Contains(e.what(), "no body named \"rod\""));
+
+  e = error_of(kBase, {"numerics.cfl"});
+  EXPECT_EQ(e.key(), "numerics.cfl");
+  EXPECT_TRUE(Contains(e.what(), "KEY=VALUE"));
+
+  e = error_of(kBase, {"cfl=0.1"});
+  EXPECT_TRUE(Contains(e.what(), "TABLE.key"));
+
+  e = error_of(kBase, {"projectile.velocity.x=1"});
+  EXPECT_TRUE(Contains(e.what(), "not a table"));
+
+  const std::string t = with("name = \"plate\"", "name = \"steel\"");
+  e = error_of(t, {"steel.density=1"});
+  EXPECT_TRUE(Contains(e.what(), "names both a body and a material"));
+}
+
+TEST(CaseFileOverrides, SpacingOverride) {
+  CaseSpec s = parse_case_string(kBase, "case.toml", {"numerics.spacing=1 mm"}, "0.25mm");
+  EXPECT_DOUBLE_EQ(s.numerics.spacing, 0.25e-3);
+  const CaseError e = error_of(kBase, {}, "0.25 m/s");
+  EXPECT_EQ(e.key(), "numerics.spacing");
+  EXPECT_TRUE(Contains(e.what(), "spacing override"));
+}
+
+// ---- files ----
+
+TEST(CaseFileLoad, MissingFile) {
+  try {
+    impactsph::load_case_file(std::string(IMPACTSPH_TEST_DATA) + "/no-such-case.toml");
+    FAIL() << "accepted";
+  } catch (const CaseError& e) {
+    EXPECT_TRUE(Contains(e.what(), "no such case file"));
+  }
+}
+
+TEST(CaseFileLoad, FixturesNameFileLineAndKey) {
+  struct Fixture {
+    std::string file, key, hint;
+    int line;
+  };
+  const std::vector<Fixture> fixtures = {
+      {"bad_unknown_key.toml", "materials.steel.strength.yeild_stress", "did you mean \"yield_stress\"?", 12},
+      {"bad_units.toml", "bodies[0].max[2]", "\"3 kg\" is a mass; expected a length", 17},
+      {"bad_syntax.toml", "", "not valid TOML", 5},
+      {"bad_material_ref.toml", "bodies[0].material", "no material named \"stel\"", 13},
+  };
+  for (const Fixture& f : fixtures) {
+    SCOPED_TRACE(f.file);
+    const std::string path = std::string(IMPACTSPH_TEST_DATA) + "/" + f.file;
+    try {
+      impactsph::load_case_file(path);
+      ADD_FAILURE() << "accepted";
+    } catch (const CaseError& e) {
+      EXPECT_EQ(e.file(), path);
+      EXPECT_EQ(e.line(), f.line) << e.what();
+      EXPECT_EQ(e.key(), f.key);
+      EXPECT_TRUE(Contains(e.what(), f.hint));
+      EXPECT_TRUE(Contains(e.what(), path + ":" + std::to_string(f.line) + ": "));
+    }
+  }
+}
+
+TEST(CaseFileLoad, DocumentedExampleLoads) {
+  const CaseSpec s = impactsph::load_case_file(std::string(IMPACTSPH_TEST_DATA) + "/example_plate_impact.toml");
+  EXPECT_EQ(s.name, "plate-impact-example");
+  EXPECT_EQ(s.bodies.size(), 2u);
+  EXPECT_EQ(s.fixed.size(), 1u);
+  EXPECT_NEAR(s.bodies[1].velocity.z, -298, 1e-12);
+}
