@@ -1,0 +1,24 @@
+// Where a run stands: everything besides the particles that a checkpoint must hold so that a restarted
+// run continues bit for bit.
+#pragma once
+#include <cstdint>
+
+#include "common/particle_set.hpp"
+
+namespace impactsph {
+
+struct RunClock {
+  double time = 0;              // simulated time, s
+  std::int64_t step = 0;        // steps taken
+  std::int64_t frame = 0;       // VTU frames written
+  double next_output = 0;       // next observables row, s
+  double next_frame = 0;        // next VTU frame, s
+  double next_checkpoint = 0;   // next periodic checkpoint, s
+  double wall_seconds = 0;      // wall time spent stepping before this (restarted) process, s
+  double neighbour_sum = 0;     // sum over steps of the mean neighbour count, for the summary
+  Vec3d initial_momentum{0, 0, 0};      // totals at t = 0, kg m/s
+  double initial_kinetic_energy = 0;    // J
+  double initial_internal_energy = 0;   // J
+};
+
+}  // namespace impactsph
