@@ -1,0 +1,214 @@
+// impactsph: the command line of ImpactSPH.
+//   impactsph run CASE.toml [--out DIR] [--threads N] [--spacing X] [--set key=value ...] [--quiet]
+//   impactsph run --restart DIR
+//   impactsph check CASE.toml [--spacing X] [--set key=value ...]
+#include <omp.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "common/case_file.hpp"
+#include "common/driver.hpp"
+#include "common/errors.hpp"
+#include "common/output.hpp"
+#include "common/scene.hpp"
+#include "common/units.hpp"
+#include "reference/solver.hpp"
+
+namespace fs = std::filesystem;
+using namespace impactsph;
+
+namespace {
+
+struct CaseArgs {
+  std::string case_file;
+  std::string spacing;
+  std::vector<std::string> sets;
+};
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// FNV-1a 64 of the case text and every override: a restart must see the same inputs.
+std::string fingerprint(const CaseArgs& a) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const std::string& s) {
+    for (unsigned char c : s) {
+      h ^= c;
+      h *= 1099511628211ull;
+    }
+    h ^= 0xff;
+    h *= 1099511628211ull;
+  };
+  mix(read_file(a.case_file));
+  mix(a.spacing);
+  for (const std::string& s : a.sets) mix(s);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+const char* shape_name(const BodySpec& b) { return b.shape == Shape::Box ? "box" : "cylinder"; }
+
+void print_scene(const Scene& scene, double dt) {
+  const CaseSpec& s = scene.spec;
+  std::printf("case      %s (%s)\n", s.name.c_str(), s.source_file.c_str());
+  if (!s.description.empty()) std::printf("          %s\n", s.description.c_str());
+  std::printf("spacing   %.6g mm, h = %.6g mm (h/dx = %.3g), kernel %s\n", s.numerics.spacing * 1e3,
+              s.numerics.spacing * s.numerics.h_factor * 1e3, s.numerics.h_factor,
+              s.numerics.kernel == KernelKind::WendlandC2 ? "Wendland C2" : "cubic spline");
+  std::printf("\n%-14s %-14s %-9s %10s %12s %10s\n", "body", "material", "shape", "particles", "mass [g]", "fixed");
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+    std::size_t fixed = 0;
+    for (std::size_t i = 0; i < scene.particles.size(); ++i)
+      if (scene.particles.body[i] == static_cast<int>(k) && scene.particles.fixed[i]) ++fixed;
+    const BodyInfo& b = scene.bodies[k];
+    std::printf("%-14s %-14s %-9s %10zu %12.6g %10zu\n", b.name.c_str(), s.materials[b.material].name.c_str(),
+                shape_name(s.bodies[k]), b.particle_count, b.initial_mass * 1e3, fixed);
+  }
+  std::printf("%-14s %-14s %-9s %10zu\n", "total", "", "", scene.particles.size());
+  for (const SymmetryPlaneSpec& p : s.symmetry)
+    std::printf("symmetry  plane %c = %.6g mm\n", "xyz"[p.axis], p.position * 1e3);
+  const double steps = dt > 0 ? s.time.end / dt : 0;
+  std::printf("\ntime      end %.6g us, output every %.6g us\n", s.time.end * 1e6, s.time.output_interval * 1e6);
+  std::printf("step      estimated dt %.4g ns (CFL %.3g), about %.0f steps, %.3g particle-steps\n", dt * 1e9,
+              s.numerics.cfl, steps, steps * static_cast<double>(scene.particles.size()));
+}
+
+Scene load_scene(const CaseArgs& a) {
+  CaseSpec spec = load_case_file(a.case_file, a.sets, a.spacing);
+  return build_scene(spec);
+}
+
+int run_command(CaseArgs args, std::string out, int threads, bool quiet, const std::string& restart_dir,
+                const std::vector<std::string>& argv_all) {
+  if (!restart_dir.empty()) {
+    const fs::path run_json = fs::path(restart_dir) / "run.json";
+    std::ifstream in(run_json);
+    if (!in) throw std::runtime_error("cannot restart: " + run_json.string() + " is missing (is " + restart_dir +
+                                      " the --out folder of an earlier run?)");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    if (args.case_file.empty()) {
+      args.case_file = j.at("case_file").get<std::string>();
+      args.spacing = j.at("spacing").get<std::string>();
+      args.sets = j.at("set").get<std::vector<std::string>>();
+    }
+    out = restart_dir;
+    if (threads <= 0) threads = j.value("threads", 0);
+  }
+  if (args.case_file.empty()) throw std::runtime_error("run needs a case file (impactsph run CASE.toml) or --restart DIR");
+  if (threads > 0) omp_set_num_threads(threads);
+  threads = omp_get_max_threads();
+
+  Scene scene = load_scene(args);
+  if (out.empty()) out = (fs::path("runs") / scene.spec.name).string();
+  RunOptions opt;
+  opt.out_dir = out;
+  opt.quiet = quiet;
+  opt.threads = threads;
+  opt.fingerprint = fingerprint(args);
+  opt.restart = !restart_dir.empty();
+  opt.command_line = argv_all;
+  fs::create_directories(opt.out_dir);
+  if (!opt.restart) {
+    nlohmann::json j{{"case_file", fs::absolute(args.case_file).string()}, {"spacing", args.spacing}, {"set", args.sets},
+                     {"threads", threads}};
+    write_text_atomic(opt.out_dir / "run.json", j.dump(2) + "\n");
+  }
+
+  reference::ReferenceSolver solver(scene);
+  if (!quiet) {
+    std::printf("ImpactSPH: %s, %zu particles, %d threads, output in %s%s\n", scene.spec.name.c_str(),
+                scene.particles.size(), threads, opt.out_dir.string().c_str(), opt.restart ? " (restart)" : "");
+    std::fflush(stdout);
+  }
+  const RunResult r = run_simulation(scene, solver, opt);
+  if (r.interrupted) {
+    std::printf("stopped at t = %.6g us (step %lld); checkpoint written. Continue with:\n  impactsph run --restart %s\n",
+                r.clock.time * 1e6, static_cast<long long>(r.clock.step), opt.out_dir.string().c_str());
+    return 130;
+  }
+  std::printf("done: t = %.6g us in %lld steps, %.1f s wall, %.3g particle-steps/s, %.1f neighbours per particle\n",
+              r.clock.time * 1e6, static_cast<long long>(r.clock.step), r.wall_seconds, r.particle_steps_per_second,
+              r.mean_neighbours);
+  for (std::size_t k = 0; k < r.bodies.size(); ++k) {
+    const BodySummary& b = r.bodies[k];
+    std::printf("  %-14s mass %.6g g  velocity (%.4g, %.4g, %.4g) m/s  kinetic %.6g J  internal %.6g J\n",
+                scene.bodies[k].name.c_str(), b.mass * 1e3, b.velocity.x, b.velocity.y, b.velocity.z, b.kinetic_energy,
+                b.internal_energy);
+  }
+  const double e0 = r.initial_totals.total_energy(), e1 = r.final_totals.total_energy();
+  if (e0 != 0) std::printf("  energy drift %.3g%%\n", 100 * (e1 - e0) / std::abs(e0));
+  std::printf("results: %s (summary.json, history_*.csv, particles.pvd)\n", opt.out_dir.string().c_str());
+  return 0;
+}
+
+int check_command(const CaseArgs& args) {
+  Scene scene = load_scene(args);
+  reference::ReferenceSolver solver(scene);
+  const double dt = solver.stable_time_step(scene.particles);
+  print_scene(scene, dt);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> argv_all(argv, argv + argc);
+  CLI::App app{
+      "ImpactSPH: high-velocity impact of solids with 3D SPH.\n\n"
+      "  impactsph check cases/elastic-wave/case.toml      validate a case and print its scene\n"
+      "  impactsph run cases/elastic-wave/case.toml        run it (results in runs/<case name>/)\n"
+      "  impactsph run --restart runs/elastic-wave         continue a stopped run from its checkpoint\n\n"
+      "Values take units: --spacing 0.5mm, --set projectile.velocity=\"298 m/s\". Case files: docs/case-files.md"};
+  app.require_subcommand(1);
+
+  CaseArgs run_args, check_args;
+  std::string out, restart_dir;
+  int threads = 0;
+  bool quiet = false;
+  auto add_case_options = [](CLI::App* sub, CaseArgs& a) {
+    sub->add_option("--spacing", a.spacing, "particle spacing, overrides numerics.spacing (e.g. 0.5mm)");
+    sub->add_option("--set", a.sets, "override a case value: KEY=VALUE, e.g. projectile.velocity=\"298 m/s\", "
+                                     "numerics.cfl=0.1 (repeatable)")
+        ->take_all();
+  };
+  CLI::App* run = app.add_subcommand("run", "run a case (or continue one with --restart DIR)");
+  run->add_option("case", run_args.case_file, "case file (TOML)")->check(CLI::ExistingFile);
+  run->add_option("--out", out, "output folder (default runs/<case name>)");
+  run->add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
+  run->add_flag("--quiet,-q", quiet, "no banner and no progress line");
+  run->add_option("--restart", restart_dir, "continue the run whose output folder is DIR from its last checkpoint");
+  add_case_options(run, run_args);
+  CLI::App* check = app.add_subcommand("check", "validate a case file and print the scene it builds");
+  check->add_option("case", check_args.case_file, "case file (TOML)")->required()->check(CLI::ExistingFile);
+  add_case_options(check, check_args);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all);
+    return check_command(check_args);
+  } catch (const CaseError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 2;
+  } catch (const DivergenceError& e) {
+    std::fprintf(stderr, "\nerror: %s\nThe last good state was written (last frame and checkpoint.bin).\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+}

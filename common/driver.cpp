@@ -1,0 +1,265 @@
+#include "common/driver.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "common/checkpoint.hpp"
+#include "common/errors.hpp"
+#include "common/output.hpp"
+
+namespace impactsph {
+
+namespace {
+
+std::atomic<int> g_stop_signal{0};
+extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
+
+// Installs the SIGINT/SIGTERM handlers for the lifetime of a run and restores the old ones after.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop_signal.store(0);
+    old_int_ = std::signal(SIGINT, on_stop_signal);
+    old_term_ = std::signal(SIGTERM, on_stop_signal);
+  }
+  ~StopSignals() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+  int received() const { return g_stop_signal.load(); }
+
+ private:
+  void (*old_int_)(int);
+  void (*old_term_)(int);
+};
+
+std::string format_seconds(double s) {
+  char buf[64];
+  if (s < 1e-3) std::snprintf(buf, sizeof buf, "%.3g us", s * 1e6);
+  else if (s < 1.0) std::snprintf(buf, sizeof buf, "%.4g ms", s * 1e3);
+  else std::snprintf(buf, sizeof buf, "%.4g s", s);
+  return buf;
+}
+
+std::string format_wall(double s) {
+  char buf[64];
+  const long t = static_cast<long>(std::lround(s));
+  if (t >= 3600) std::snprintf(buf, sizeof buf, "%ldh%02ldm", t / 3600, (t / 60) % 60);
+  else if (t >= 60) std::snprintf(buf, sizeof buf, "%ldm%02lds", t / 60, t % 60);
+  else std::snprintf(buf, sizeof buf, "%lds", t);
+  return buf;
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(colon + 2);
+    }
+  }
+  return "unknown";
+}
+
+nlohmann::json vec_json(Vec3d v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions& opt, const RunResult& r,
+                   double correction_fallbacks) {
+  nlohmann::json j;
+  j["case"] = scene.spec.name;
+  j["case_file"] = scene.spec.source_file;
+  j["command_line"] = opt.command_line;
+  j["solver"] = stepper.name();
+  j["hardware"] = {{"cpu", cpu_model()}, {"threads", opt.threads}};
+  j["particles"] = scene.particles.size();
+  j["spacing_m"] = scene.spec.numerics.spacing;
+  j["smoothing_length_m"] = scene.spec.numerics.spacing * scene.spec.numerics.h_factor;
+  j["steps"] = r.clock.step;
+  j["simulated_time_s"] = r.clock.time;
+  j["end_time_s"] = scene.spec.time.end;
+  j["completed"] = !r.interrupted;
+  j["wall_time_s"] = r.wall_seconds;
+  j["particle_steps_per_second"] = r.particle_steps_per_second;
+  j["mean_neighbours"] = r.mean_neighbours;
+  j["correction_fallbacks_last_step"] = correction_fallbacks;
+  nlohmann::json bodies = nlohmann::json::array();
+  for (std::size_t k = 0; k < r.bodies.size(); ++k) {
+    const BodySummary& b = r.bodies[k];
+    bodies.push_back({{"name", scene.bodies[k].name},
+                      {"particles", b.particles},
+                      {"initial_mass_kg", scene.bodies[k].initial_mass},
+                      {"mass_kg", b.mass},
+                      {"velocity_m_s", vec_json(b.velocity)},
+                      {"speed_m_s", norm(b.velocity)},
+                      {"kinetic_energy_J", b.kinetic_energy},
+                      {"internal_energy_J", b.internal_energy},
+                      {"damaged_mass_fraction", b.damaged_fraction}});
+  }
+  j["bodies"] = bodies;
+  const double e0 = r.initial_totals.total_energy(), e1 = r.final_totals.total_energy();
+  j["totals"] = {{"initial_momentum_kg_m_s", vec_json(r.initial_totals.momentum)},
+                 {"final_momentum_kg_m_s", vec_json(r.final_totals.momentum)},
+                 {"initial_energy_J", e0},
+                 {"final_energy_J", e1},
+                 {"energy_drift_relative", e0 != 0 ? (e1 - e0) / std::abs(e0) : 0.0}};
+  write_text_atomic(opt.out_dir / "summary.json", j.dump(2) + "\n");
+}
+
+}  // namespace
+
+std::filesystem::path checkpoint_path(const std::filesystem::path& out_dir) { return out_dir / "checkpoint.bin"; }
+
+RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) {
+  namespace fs = std::filesystem;
+  fs::create_directories(opt.out_dir);
+  const TimeSpec& ts = scene.spec.time;
+  const double frame_interval = ts.frame_interval > 0 ? ts.frame_interval : ts.output_interval;
+  ParticleSet& p = scene.particles;
+
+  std::vector<std::string> body_names;
+  for (const BodyInfo& b : scene.bodies) body_names.push_back(b.name);
+  HistoryWriter history(opt.out_dir, body_names);
+  FrameSeriesWriter frames(opt.out_dir, "particles");
+
+  RunResult result;
+  RunClock& clock = result.clock;
+  if (opt.restart) {
+    CheckpointData data = read_checkpoint(checkpoint_path(opt.out_dir));
+    if (data.fingerprint != opt.fingerprint)
+      throw std::runtime_error("the checkpoint in " + opt.out_dir.string() +
+                               " was written by a different case or different overrides; restart with the same "
+                               "case file, --spacing and --set values, or start afresh without --restart");
+    if (data.particles.size() != p.size())
+      throw std::runtime_error("the checkpoint holds " + std::to_string(data.particles.size()) +
+                               " particles but the case builds " + std::to_string(p.size()));
+    p = std::move(data.particles);
+    clock = data.clock;
+    history.load_existing(clock.time);
+    frames.truncate_after(clock.frame);
+  } else {
+    frames.truncate_after(0);  // a fresh run into an existing folder starts a new series
+    clock.next_output = 0;
+    clock.next_frame = 0;
+    clock.next_checkpoint = ts.checkpoint_interval > 0 ? ts.checkpoint_interval : ts.end * 2;
+  }
+  if (!opt.restart) {
+    const Totals t0 = summarise_totals(p);
+    clock.initial_momentum = t0.momentum;
+    clock.initial_kinetic_energy = t0.kinetic_energy;
+    clock.initial_internal_energy = t0.internal_energy;
+  }
+  result.initial_totals.momentum = clock.initial_momentum;
+  result.initial_totals.kinetic_energy = clock.initial_kinetic_energy;
+  result.initial_totals.internal_energy = clock.initial_internal_energy;
+
+  const bool tty = isatty(fileno(stderr)) != 0;
+  const bool progress = !opt.quiet && tty;
+  StopSignals signals;
+  const auto wall_start = std::chrono::steady_clock::now();
+  auto last_progress = wall_start;
+  const double wall_before = clock.wall_seconds;
+  const std::int64_t steps_before = clock.step;
+  const double time_at_start = clock.time;
+  double first_dt = 0;
+  const double time_eps = 1e-12 * ts.end;
+  std::size_t fallbacks = 0;
+
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
+  auto observe = [&](bool force) {
+    if (force || clock.time >= clock.next_output - time_eps) {
+      if (ts.output_interval > 0)
+        while (clock.next_output <= clock.time + time_eps) clock.next_output += ts.output_interval;
+      const Totals totals = summarise_totals(p);
+      if (scene.spec.output.csv) {
+        history.append(clock.time, summarise_bodies(p, scene.bodies.size()), totals);
+        history.flush();
+      }
+      const double e0 = result.initial_totals.total_energy();
+      if (e0 > 0 && totals.total_energy() > 1.5 * e0)
+        throw DivergenceError("total energy grew from " + std::to_string(e0) + " J to " +
+                              std::to_string(totals.total_energy()) + " J at t = " + format_seconds(clock.time) +
+                              ": the run is unstable; try a smaller numerics.cfl");
+    }
+    if (scene.spec.output.vtu && (force || clock.time >= clock.next_frame - time_eps)) {
+      while (clock.next_frame <= clock.time + time_eps) clock.next_frame += frame_interval;
+      frames.write_frame(clock.time, clock.frame, p, scene.materials);
+      ++clock.frame;
+    }
+  };
+  auto save = [&] {
+    clock.wall_seconds = wall_before + elapsed();
+    write_checkpoint(checkpoint_path(opt.out_dir), p, clock, opt.fingerprint);
+  };
+
+  try {
+    observe(false);
+    while (clock.time < ts.end - time_eps) {
+      double dt = stepper.stable_time_step(p);
+      if (first_dt == 0) first_dt = dt;
+      if (!(dt > 1e-4 * first_dt))
+        throw DivergenceError("the time step collapsed from " + format_seconds(first_dt) + " to " + format_seconds(dt) +
+                              " at t = " + format_seconds(clock.time) + " (a particle is being crushed or flies off)");
+      dt = std::min(dt, ts.end - clock.time);
+      stepper.step(p, dt);
+      clock.time += dt;
+      ++clock.step;
+      const StepStats st = stepper.last_stats();
+      clock.neighbour_sum += st.mean_neighbours;
+      fallbacks = st.correction_fallbacks;
+      observe(false);
+      if (clock.time >= clock.next_checkpoint - time_eps) {
+        while (clock.next_checkpoint <= clock.time + time_eps) clock.next_checkpoint += ts.checkpoint_interval;
+        save();
+      }
+      if (signals.received()) {
+        result.interrupted = true;
+        break;
+      }
+      if (progress) {
+        const auto now = std::chrono::steady_clock::now();
+        if (std::chrono::duration<double>(now - last_progress).count() > 0.5) {
+          last_progress = now;
+          const double frac = clock.time / ts.end;
+          const double done_here = clock.time - time_at_start;
+          const double eta = done_here > 0 ? elapsed() * (ts.end - clock.time) / done_here : 0.0;
+          std::fprintf(stderr, "\r  t = %s / %s  step %lld  dt = %s  %5.1f%%  ETA %s   ", format_seconds(clock.time).c_str(),
+                       format_seconds(ts.end).c_str(), static_cast<long long>(clock.step), format_seconds(dt).c_str(),
+                       100 * frac, format_wall(eta).c_str());
+          std::fflush(stderr);
+        }
+      }
+    }
+  } catch (const DivergenceError&) {
+    if (progress) std::fprintf(stderr, "\n");
+    // p still holds the last good state: keep it for inspection and restart.
+    frames.write_frame(clock.time, clock.frame, p, scene.materials);
+    ++clock.frame;
+    save();
+    throw;
+  }
+  if (progress) std::fprintf(stderr, "\n");
+  if (!result.interrupted) observe(true);
+  save();
+
+  result.wall_seconds = wall_before + elapsed();
+  const std::int64_t steps = clock.step;
+  const double this_wall = elapsed();
+  result.particle_steps_per_second =
+      this_wall > 0 ? static_cast<double>(p.size()) * static_cast<double>(steps - steps_before) / this_wall : 0.0;
+  result.mean_neighbours = steps > 0 ? clock.neighbour_sum / static_cast<double>(steps) : 0.0;
+  result.bodies = summarise_bodies(p, scene.bodies.size());
+  result.final_totals = summarise_totals(p);
+  write_summary(scene, stepper, opt, result, static_cast<double>(fallbacks));
+  return result;
+}
+
+}  // namespace impactsph

@@ -1,0 +1,81 @@
+#include "reference/neighbours.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace impactsph::reference {
+
+void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_count, double radius, NeighbourList& out) {
+  const std::size_t n = points.size();
+  out.offsets.assign(query_count + 1, 0);
+  out.indices.clear();
+  if (n == 0) return;
+  if (!(radius > 0)) throw std::invalid_argument("neighbour search radius must be positive");
+
+  Vec3d lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+  Vec3d hi{-lo.x, -lo.y, -lo.z};
+  for (const Vec3d& x : points) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], x[a]);
+      hi[a] = std::max(hi[a], x[a]);
+    }
+  }
+  std::int64_t dims[3];
+  for (int a = 0; a < 3; ++a) dims[a] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[a] - lo[a]) / radius) + 1);
+  const std::int64_t cell_count = dims[0] * dims[1] * dims[2];
+  if (cell_count > 4 * static_cast<std::int64_t>(n) + 1000000)
+    throw std::runtime_error("particles spread over too large a box for the cell list (a particle has flown far away?)");
+
+  auto cell_coord = [&](const Vec3d& x, int a) {
+    return std::min<std::int64_t>(dims[a] - 1, static_cast<std::int64_t>((x[a] - lo[a]) / radius));
+  };
+  // Counting sort into cells: particles keep their index order inside a cell.
+  std::vector<std::int64_t> cell_of(n);
+  std::vector<std::int64_t> cell_start(static_cast<std::size_t>(cell_count) + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3d& x = points[i];
+    cell_of[i] = (cell_coord(x, 2) * dims[1] + cell_coord(x, 1)) * dims[0] + cell_coord(x, 0);
+    ++cell_start[static_cast<std::size_t>(cell_of[i]) + 1];
+  }
+  for (std::int64_t c = 0; c < cell_count; ++c) cell_start[c + 1] += cell_start[c];
+  std::vector<std::int32_t> sorted(n);
+  {
+    std::vector<std::int64_t> fill(cell_start.begin(), cell_start.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) sorted[static_cast<std::size_t>(fill[cell_of[i]]++)] = static_cast<std::int32_t>(i);
+  }
+
+  const double r2max = radius * radius;
+  auto visit = [&](std::size_t i, auto&& emit) {
+    const Vec3d xi = points[i];
+    const std::int64_t cx = cell_coord(xi, 0), cy = cell_coord(xi, 1), cz = cell_coord(xi, 2);
+    for (std::int64_t z = std::max<std::int64_t>(0, cz - 1); z <= std::min(dims[2] - 1, cz + 1); ++z)
+      for (std::int64_t y = std::max<std::int64_t>(0, cy - 1); y <= std::min(dims[1] - 1, cy + 1); ++y)
+        for (std::int64_t x = std::max<std::int64_t>(0, cx - 1); x <= std::min(dims[0] - 1, cx + 1); ++x) {
+          const std::int64_t c = (z * dims[1] + y) * dims[0] + x;
+          for (std::int64_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
+            const std::int32_t j = sorted[static_cast<std::size_t>(k)];
+            if (static_cast<std::size_t>(j) == i) continue;
+            if (norm2(xi - points[static_cast<std::size_t>(j)]) < r2max) emit(j);
+          }
+        }
+  };
+
+  std::vector<std::int64_t> counts(query_count);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(query_count); ++i) {
+    std::int64_t c = 0;
+    visit(static_cast<std::size_t>(i), [&](std::int32_t) { ++c; });
+    counts[static_cast<std::size_t>(i)] = c;
+  }
+  for (std::size_t i = 0; i < query_count; ++i) out.offsets[i + 1] = out.offsets[i] + counts[i];
+  out.indices.resize(static_cast<std::size_t>(out.offsets[query_count]));
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(query_count); ++i) {
+    std::int64_t k = out.offsets[static_cast<std::size_t>(i)];
+    visit(static_cast<std::size_t>(i), [&](std::int32_t j) { out.indices[static_cast<std::size_t>(k++)] = j; });
+  }
+}
+
+}  // namespace impactsph::reference

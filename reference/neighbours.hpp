@@ -1,0 +1,27 @@
+// Cell-linked list neighbour search for the reference solver (design.md, step 1).
+// Particles are binned into cubic cells of the search radius; each particle's neighbours are gathered
+// from the 27 surrounding cells in a fixed order into a compressed list (CSR). The list is built once a
+// step with a skin that covers the relative motion over the step, so both stages of the integrator use
+// it. Building and the order inside each row do not depend on the thread count.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "common/particle_set.hpp"
+
+namespace impactsph::reference {
+
+struct NeighbourList {
+  std::vector<std::int64_t> offsets;  // row i is indices[offsets[i], offsets[i+1])
+  std::vector<std::int32_t> indices;  // neighbour j (excluding i itself)
+  double mean_count() const {
+    const std::size_t rows = offsets.empty() ? 0 : offsets.size() - 1;
+    return rows ? static_cast<double>(indices.size()) / static_cast<double>(rows) : 0.0;
+  }
+};
+
+// Neighbours within `radius` of each of the first `query_count` points, searched among all points
+// (queries first, then e.g. mirror ghosts).
+void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_count, double radius, NeighbourList& out);
+
+}  // namespace impactsph::reference

@@ -1,0 +1,286 @@
+#include "reference/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "common/correction.hpp"
+#include "common/delta_sph.hpp"
+#include "common/errors.hpp"
+#include "common/kernels.hpp"
+#include "common/material.hpp"
+#include "common/timestep.hpp"
+#include "common/viscosity.hpp"
+
+namespace impactsph::reference {
+
+namespace {
+
+Vec3d hadamard(Vec3d a, Vec3d b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
+
+// Mirror image of a symmetric tensor under x'_a = sign_a x_a: T'_ab = sign_a sign_b T_ab.
+Sym3d mirror(Sym3d t, Vec3d s) { return {t.xx, t.yy, t.zz, s.x * s.y * t.xy, s.y * s.z * t.yz, s.z * s.x * t.zx}; }
+Mat3d mirror(const Mat3d& t, Vec3d s) {
+  Mat3d r;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) r.m[a][b] = s[a] * s[b] * t.m[a][b];
+  return r;
+}
+bool finite(Vec3d v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(Sym3d s) {
+  return std::isfinite(s.xx) && std::isfinite(s.yy) && std::isfinite(s.zz) && std::isfinite(s.xy) && std::isfinite(s.yz) &&
+         std::isfinite(s.zx);
+}
+
+}  // namespace
+
+ReferenceSolver::ReferenceSolver(const Scene& scene)
+    : numerics_(scene.spec.numerics), symmetry_(scene.spec.symmetry), materials_(scene.materials) {
+  for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
+}
+
+double ReferenceSolver::stable_time_step(const ParticleSet& p) {
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  double dt = std::numeric_limits<double>::infinity();
+#pragma omp parallel for schedule(static) reduction(min : dt)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
+    double c = 0;
+    eos_pressure(mat.eos, p.rho[i], p.energy[i], c);
+    const double ci = signal_speed(mat, c, p.rho[i]);
+    dt = std::min(dt, cfl_time_step(numerics_.cfl, p.h[i], ci, norm(p.vel[i])));
+  }
+  return dt;
+}
+
+// Mirror particles for the symmetry planes. Planes are taken in turn and each mirrors the real particles
+// and the ghosts made so far, so the corner of two planes gets its double image.
+void ReferenceSolver::find_ghosts(const std::vector<Vec3d>& pos, double margin) {
+  ghosts_.clear();
+  const std::size_t n = pos.size();
+  for (const SymmetryPlaneSpec& plane : symmetry_) {
+    const int a = plane.axis;
+    const std::size_t existing = ghosts_.size();
+    for (std::size_t k = 0; k < n + existing; ++k) {
+      Ghost g = k < n ? Ghost{static_cast<std::int32_t>(k), Vec3d{1, 1, 1}, Vec3d{0, 0, 0}} : ghosts_[k - n];
+      const double xa = g.sign[a] * pos[static_cast<std::size_t>(g.source)][a] + g.shift[a];
+      if (std::abs(xa - plane.position) >= margin) continue;
+      // Reflect x'_a = 2 c - x_a applied after x_a = s x0_a + t.
+      g.sign[a] = -g.sign[a];
+      g.shift[a] = 2 * plane.position - g.shift[a];
+      ghosts_.push_back(g);
+    }
+  }
+}
+
+void ReferenceSolver::evaluate(const State& y, Rates& f) {
+  const std::size_t n = y.pos.size();
+  const std::size_t total = n + ghosts_.size();
+  const std::int64_t ni = static_cast<std::int64_t>(n);
+
+  // Fill the work arrays: real particles, then ghosts from their sources.
+  x_.resize(total); v_.resize(total); rho_.resize(total); pressure_.resize(total); sound_speed_.resize(total);
+  m_.resize(total); hh_.resize(total); mat_.resize(total); s_over_rho2_.resize(total); l_inverse_.resize(total);
+  grad_rho_.resize(total); grad_v_.resize(n);
+  std::vector<Sym3d> stress(total);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < ni; ++i) {
+    x_[i] = y.pos[i]; v_[i] = y.vel[i]; rho_[i] = y.rho[i]; m_[i] = mass_[i]; hh_[i] = h_[i];
+    mat_[i] = material_[i]; stress[i] = y.dev_stress[i];
+    pressure_[i] = eos_pressure(materials_[static_cast<std::size_t>(mat_[i])].eos, rho_[i], y.energy[i], sound_speed_[i]);
+  }
+  for (std::size_t k = 0; k < ghosts_.size(); ++k) {
+    const Ghost& g = ghosts_[k];
+    const std::size_t s = static_cast<std::size_t>(g.source), i = n + k;
+    x_[i] = hadamard(g.sign, y.pos[s]) + g.shift;
+    v_[i] = hadamard(g.sign, y.vel[s]);
+    rho_[i] = rho_[s]; m_[i] = m_[s]; hh_[i] = hh_[s]; mat_[i] = mat_[s];
+    pressure_[i] = pressure_[s]; sound_speed_[i] = sound_speed_[s];
+    stress[i] = mirror(y.dev_stress[s], g.sign);
+  }
+  for (std::size_t i = 0; i < total; ++i) {
+    const double inv_rho2 = 1.0 / (rho_[i] * rho_[i]);
+    const Sym3d& s = stress[i];
+    s_over_rho2_[i] = inv_rho2 * Sym3d{s.xx - pressure_[i], s.yy - pressure_[i], s.zz - pressure_[i], s.xy, s.yz, s.zx};
+  }
+
+  const KernelKind kernel = numerics_.kernel;
+  const std::int64_t* off = neighbours_.offsets.data();
+  const std::int32_t* nb = neighbours_.indices.data();
+
+  // Pass 1: correction matrix L_i (F 2.13), velocity gradient, renormalised density gradient (F 2.19).
+  std::size_t fallbacks = 0;
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks)
+  for (std::int64_t i = 0; i < ni; ++i) {
+    Mat3d L = Mat3d::zero(), G = Mat3d::zero();
+    Vec3d gr{0, 0, 0};
+    const Vec3d xi = x_[i], vi = v_[i];
+    const double rhoi = rho_[i], hi = hh_[i];
+    for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
+      const std::int32_t j = nb[k];
+      const Vec3d xij = xi - x_[j];
+      const double hij = 0.5 * (hi + hh_[j]);
+      const double r = norm(xij);
+      if (r >= kernel_support(hij)) continue;
+      const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
+      const double vj = m_[j] / rho_[j];
+      accumulate_correction(L, vj, gw, xij);
+      G = G + vj * outer(v_[j] - vi, gw);
+      gr += (vj * (rho_[j] - rhoi)) * gw;
+    }
+    bool fell_back = false;
+    const Mat3d Linv = correction_inverse(L, numerics_.correction, fell_back);
+    if (fell_back) ++fallbacks;
+    l_inverse_[i] = Linv;
+    grad_v_[i] = G * Linv.transpose();  // sum V_j (v_j - v_i) (x) L^-1 grad W
+    grad_rho_[i] = Linv * gr;
+  }
+  stats_.correction_fallbacks = fallbacks;
+  for (std::size_t k = 0; k < ghosts_.size(); ++k) {
+    const Ghost& g = ghosts_[k];
+    const std::size_t s = static_cast<std::size_t>(g.source);
+    l_inverse_[n + k] = mirror(l_inverse_[s], g.sign);
+    grad_rho_[n + k] = hadamard(g.sign, grad_rho_[s]);
+  }
+
+  // Constitutive rate: Jaumann deviatoric stress rate of the body's strength model (F 3.5-3.7).
+  f.vel.resize(n); f.acc.resize(n); f.drho.resize(n); f.denergy.resize(n); f.dstress.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < ni; ++i)
+    f.dstress[i] = deviatoric_stress_rate(materials_[static_cast<std::size_t>(mat_[i])], y.dev_stress[i], grad_v_[i]);
+
+  // Pass 2: continuity with delta-SPH (Marrone form), momentum (F 2.11) and energy (consistent F 2.12).
+  const ViscosityParams<double> visc = numerics_.viscosity;
+  const double delta = numerics_.delta;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < ni; ++i) {
+    const Vec3d xi = x_[i], vi = v_[i], gri = grad_rho_[i];
+    const double rhoi = rho_[i], hi = hh_[i], ci = sound_speed_[i];
+    const std::int32_t mi = mat_[i];
+    const Mat3d Ai = s_over_rho2_[i].full();
+    const Mat3d Linv_i = l_inverse_[i];
+    Vec3d acc{0, 0, 0};
+    double de = 0, diffusion = 0;
+    for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
+      const std::int32_t j = nb[k];
+      const Vec3d xij = xi - x_[j];
+      const double hij = 0.5 * (hi + hh_[j]);
+      const double r = norm(xij);
+      if (r >= kernel_support(hij)) continue;
+      const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
+      const Vec3d gt = 0.5 * ((Linv_i + l_inverse_[j]) * gw);
+      const Vec3d vij = vi - v_[j];
+      const double pi_ij = monaghan_viscosity(visc, xij, vij, hij, 0.5 * (ci + sound_speed_[j]), 0.5 * (rhoi + rho_[j]));
+      Mat3d T = Ai + s_over_rho2_[j].full();
+      T.m[0][0] -= pi_ij; T.m[1][1] -= pi_ij; T.m[2][2] -= pi_ij;
+      const Vec3d tg = T * gt;
+      acc += m_[j] * tg;
+      de -= 0.5 * m_[j] * dot(vij, tg);  // (v_j - v_i) . T gt
+      if (mat_[j] == mi) diffusion += delta_sph_term(m_[j] / rho_[j], rhoi, rho_[j], xij, gri, grad_rho_[j], gw);
+    }
+    const double c0 = std::sqrt(eos_reference_sound_speed2(materials_[static_cast<std::size_t>(mi)].eos));
+    f.drho[i] = -rhoi * grad_v_[i].trace() + delta * hi * c0 * diffusion;
+    f.denergy[i] = de;
+    if (fixed_[i]) {
+      f.vel[i] = Vec3d{0, 0, 0};
+      f.acc[i] = Vec3d{0, 0, 0};
+    } else {
+      f.vel[i] = vi;
+      f.acc[i] = acc;
+    }
+  }
+}
+
+void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out,
+                              std::vector<double>* plastic_increment) const {
+  const std::int64_t n = static_cast<std::int64_t>(y0.pos.size());
+  out.pos.resize(n); out.vel.resize(n); out.rho.resize(n); out.energy.resize(n); out.dev_stress.resize(n);
+  if (plastic_increment) plastic_increment->assign(static_cast<std::size_t>(n), 0.0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < n; ++i) {
+    out.pos[i] = y0.pos[i] + dt * f.vel[i];
+    out.vel[i] = y0.vel[i] + dt * f.acc[i];
+    out.rho[i] = y0.rho[i] + dt * f.drho[i];
+    out.energy[i] = y0.energy[i] + dt * f.denergy[i];
+    Sym3d s = y0.dev_stress[i] + dt * f.dstress[i];
+    const double dep = plastic_correction(materials_[static_cast<std::size_t>(material_[i])], s);
+    out.dev_stress[i] = s;
+    if (plastic_increment) (*plastic_increment)[static_cast<std::size_t>(i)] = dep;
+  }
+}
+
+void ReferenceSolver::check_state(const State& y, double dt) const {
+  const std::size_t n = y.pos.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (finite(y.pos[i]) && finite(y.vel[i]) && std::isfinite(y.rho[i]) && y.rho[i] > 0 && std::isfinite(y.energy[i]) &&
+        finite(y.dev_stress[i]))
+      continue;
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "the solution diverged in the step of dt = " << dt << " s at particle " << i << " of body '"
+        << body_names_[static_cast<std::size_t>(body_[i])] << "': position (" << y.pos[i].x << ", " << y.pos[i].y << ", "
+        << y.pos[i].z << ") m, velocity (" << y.vel[i].x << ", " << y.vel[i].y << ", " << y.vel[i].z
+        << ") m/s, density " << y.rho[i] << " kg/m^3, specific energy " << y.energy[i] << " J/kg, von Mises "
+        << von_mises(y.dev_stress[i]) << " Pa. Try a smaller numerics.cfl or larger viscosity coefficients.";
+    throw DivergenceError(msg.str());
+  }
+}
+
+void ReferenceSolver::load_constants(const ParticleSet& p) {
+  mass_ = p.mass; h_ = p.h; material_ = p.material; fixed_ = p.fixed; body_ = p.body;
+  h_max_ = p.size() ? *std::max_element(h_.begin(), h_.end()) : 0.0;
+}
+
+void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double skin) {
+  const double support = kernel_support(h_max_);
+  find_ghosts(pos, support + skin);
+  std::vector<Vec3d> points(pos);
+  points.reserve(pos.size() + ghosts_.size());
+  for (const Ghost& g : ghosts_) points.push_back(hadamard(g.sign, pos[static_cast<std::size_t>(g.source)]) + g.shift);
+  build_neighbour_list(points, pos.size(), support + skin, neighbours_);
+  stats_.mean_neighbours = neighbours_.mean_count();
+  stats_.ghosts = ghosts_.size();
+}
+
+std::size_t ReferenceSolver::velocity_gradients(const ParticleSet& p, std::vector<Mat3d>& grad_v) {
+  load_constants(p);
+  State y{p.pos, p.vel, p.rho, p.energy, p.dev_stress};
+  build_neighbours(y.pos, 0.0);
+  Rates f;
+  evaluate(y, f);
+  grad_v = grad_v_;
+  return stats_.correction_fallbacks;
+}
+
+void ReferenceSolver::step(ParticleSet& p, double dt) {
+  const std::size_t n = p.size();
+  load_constants(p);
+  State y0{p.pos, p.vel, p.rho, p.energy, p.dev_stress};
+  double vmax = 0;
+  for (std::size_t i = 0; i < n; ++i) vmax = std::max(vmax, norm(p.vel[i]));
+  // Pairs can approach by at most dt vmax before the second evaluation (at y_1/2 each particle has moved
+  // dt/2 |v_i|); the skin keeps every pair that can enter the support in the list.
+  build_neighbours(y0.pos, dt * vmax * 1.01 + 1e-9 * h_max_);
+
+  Rates f;
+  State y_half, y1;
+  std::vector<double> plastic_increment;
+  evaluate(y0, f);
+  advance(y0, f, 0.5 * dt, y_half, nullptr);
+  evaluate(y_half, f);
+  advance(y0, f, dt, y1, &plastic_increment);
+  check_state(y1, dt);
+
+  p.pos = std::move(y1.pos);
+  p.vel = std::move(y1.vel);
+  p.rho = std::move(y1.rho);
+  p.energy = std::move(y1.energy);
+  p.dev_stress = std::move(y1.dev_stress);
+  for (std::size_t i = 0; i < n; ++i) {
+    p.plastic_strain[i] += plastic_increment[i];
+    double c = 0;
+    p.pressure[i] = eos_pressure(materials_[static_cast<std::size_t>(p.material[i])].eos, p.rho[i], p.energy[i], c);
+  }
+}
+
+}  // namespace impactsph::reference

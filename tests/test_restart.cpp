@@ -1,0 +1,94 @@
+// Checkpoint and restart through the run driver: a run stopped by SIGINT writes a checkpoint, and the
+// restarted run ends with the same bits as an uninterrupted one (same thread count).
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <unistd.h>
+
+#include "common/case_file.hpp"
+#include "common/checkpoint.hpp"
+#include "common/driver.hpp"
+#include "reference/solver.hpp"
+
+namespace impactsph {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Passes steps through to the reference solver and raises SIGINT after `stop_after` of them, as a user
+// pressing Ctrl-C would.
+class InterruptingStepper final : public Stepper {
+ public:
+  InterruptingStepper(const Scene& scene, long stop_after) : inner_(scene), stop_after_(stop_after) {}
+  std::string name() const override { return inner_.name(); }
+  double stable_time_step(const ParticleSet& p) override { return inner_.stable_time_step(p); }
+  void step(ParticleSet& p, double dt) override {
+    inner_.step(p, dt);
+    if (++steps_ == stop_after_) std::raise(SIGINT);
+  }
+  StepStats last_stats() const override { return inner_.last_stats(); }
+
+ private:
+  reference::ReferenceSolver inner_;
+  long stop_after_;
+  long steps_ = 0;
+};
+
+Scene wave_scene() {
+  const std::vector<std::string> sets{"time.end=2us", "time.output_interval=0.25us", "time.frame_interval=1us"};
+  return build_scene(load_case_file(std::string(IMPACTSPH_CASES) + "/elastic-wave/case.toml", sets, "1 mm"));
+}
+
+template <class T>
+bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+TEST(Restart, InterruptedRunContinuesBitForBit) {
+  const fs::path root = fs::temp_directory_path() / ("impactsph-restart-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  RunOptions opt;
+  opt.quiet = true;
+  opt.fingerprint = "test";
+
+  Scene straight = wave_scene();
+  reference::ReferenceSolver solver(straight);
+  opt.out_dir = root / "straight";
+  const RunResult full = run_simulation(straight, solver, opt);
+  ASSERT_FALSE(full.interrupted);
+
+  Scene stopped = wave_scene();
+  InterruptingStepper interrupting(stopped, 37);
+  opt.out_dir = root / "stopped";
+  const RunResult first = run_simulation(stopped, interrupting, opt);
+  ASSERT_TRUE(first.interrupted);
+  EXPECT_EQ(first.clock.step, 37);
+  EXPECT_TRUE(fs::exists(checkpoint_path(opt.out_dir)));
+
+  Scene resumed = wave_scene();
+  reference::ReferenceSolver solver2(resumed);
+  opt.restart = true;
+  const RunResult second = run_simulation(resumed, solver2, opt);
+  ASSERT_FALSE(second.interrupted);
+  EXPECT_EQ(second.clock.step, full.clock.step);
+  EXPECT_EQ(second.clock.time, full.clock.time);
+  const ParticleSet& a = straight.particles;
+  const ParticleSet& b = resumed.particles;
+  EXPECT_TRUE(same_bits(a.pos, b.pos));
+  EXPECT_TRUE(same_bits(a.vel, b.vel));
+  EXPECT_TRUE(same_bits(a.rho, b.rho));
+  EXPECT_TRUE(same_bits(a.energy, b.energy));
+  EXPECT_TRUE(same_bits(a.dev_stress, b.dev_stress));
+
+  // A restart with other inputs is refused.
+  Scene other = wave_scene();
+  reference::ReferenceSolver solver3(other);
+  opt.fingerprint = "another case";
+  EXPECT_THROW(run_simulation(other, solver3, opt), std::runtime_error);
+  fs::remove_all(root);
+}
+
+}  // namespace
+}  // namespace impactsph
