@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# One entry point for a fresh machine (Debian 12):
+#   bash scripts/impactsph.sh          install what is missing, build, run the main job
+#   bash scripts/impactsph.sh test     install what is missing, build, run the tests (what CI runs)
+#   bash scripts/impactsph.sh build    install what is missing and build only
+# BUILD_DIR (default build) and JOBS (default: cores) can be set in the environment.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR=${BUILD_DIR:-build}
+JOBS=${JOBS:-$(nproc)}
+
+# Debian packages the build needs; installed only when one is missing.
+PACKAGES=(cmake g++ make libeigen3-dev libgsl-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
+          libgtest-dev libbenchmark-dev)
+
+install_missing() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "installing: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  cmake -S . -B "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$BUILD_DIR" -j "$JOBS"
+}
+
+install_missing
+build
+case "${1:-run}" in
+  run)
+    # The main job. Until the plate-penetration case lands this is the elastic-wave verification case.
+    "$BUILD_DIR"/impactsph run cases/elastic-wave/case.toml --spacing 0.5mm --out runs/elastic-wave
+    ;;
+  test)
+    # Everything but the long validation runs and the GPU tests (labels: unit, analytic, crosscheck).
+    ctest --test-dir "$BUILD_DIR" --output-on-failure -j "$JOBS" -LE 'validation|cuda'
+    ;;
+  build) ;;
+  *) echo "usage: bash scripts/impactsph.sh [run|test|build]" >&2; exit 2 ;;
+esac
