@@ -10,20 +10,24 @@ namespace impactsph {
 enum class KernelKind : int { WendlandC2 = 0, CubicSpline = 1 };
 
 // Wendland C2 (F eq 2.15): W = 21/(16 pi h^3) (1 - q/2)^4 (2q + 1), q = r/h in [0, 2].
+// One division per call: these run for every pair of every pass.
 template <class Real> IMPACTSPH_HD Real wendland_c2_w(Real r, Real h) {
-  const Real q = r / h;
+  const Real inv_h = Real(1) / h;
+  const Real q = r * inv_h;
   if (q >= Real(2)) return Real(0);
-  const Real alpha = Real(21) / (Real(16) * Constants<Real>::pi * h * h * h);
+  const Real alpha = Real(21) / (Real(16) * Constants<Real>::pi) * inv_h * inv_h * inv_h;
   const Real t = Real(1) - Real(0.5) * q;
   return alpha * (t * t) * (t * t) * (Real(2) * q + Real(1));
 }
 // dW/dr = -5 alpha q (1 - q/2)^3 / h, so grad W = -5 alpha (1 - q/2)^3 / h^2 * (x_i - x_j).
 template <class Real> IMPACTSPH_HD Real wendland_c2_grad_factor(Real r, Real h) {
-  const Real q = r / h;
+  const Real inv_h = Real(1) / h;
+  const Real q = r * inv_h;
   if (q >= Real(2)) return Real(0);
-  const Real alpha = Real(21) / (Real(16) * Constants<Real>::pi * h * h * h);
+  const Real inv_h2 = inv_h * inv_h;
+  const Real alpha = Real(21) / (Real(16) * Constants<Real>::pi) * inv_h2 * inv_h;
   const Real t = Real(1) - Real(0.5) * q;
-  return Real(-5) * alpha * t * t * t / (h * h);
+  return Real(-5) * alpha * t * t * t * inv_h2;
 }
 
 // Cubic B-spline (X eq 2), 3D constant 1/(pi h^3):

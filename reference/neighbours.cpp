@@ -1,5 +1,7 @@
 #include "reference/neighbours.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,14 +24,17 @@ void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_co
       hi[a] = std::max(hi[a], x[a]);
     }
   }
+  // Cells of half the radius, searched two cells either way: 125 cells of (radius/2)^3 hold about 60%
+  // of the candidates of 27 cells of radius^3.
+  const double cell = 0.5 * radius;
   std::int64_t dims[3];
-  for (int a = 0; a < 3; ++a) dims[a] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[a] - lo[a]) / radius) + 1);
+  for (int a = 0; a < 3; ++a) dims[a] = std::max<std::int64_t>(1, static_cast<std::int64_t>((hi[a] - lo[a]) / cell) + 1);
   const std::int64_t cell_count = dims[0] * dims[1] * dims[2];
-  if (cell_count > 4 * static_cast<std::int64_t>(n) + 1000000)
+  if (cell_count > 32 * static_cast<std::int64_t>(n) + 1000000)
     throw std::runtime_error("particles spread over too large a box for the cell list (a particle has flown far away?)");
 
   auto cell_coord = [&](const Vec3d& x, int a) {
-    return std::min<std::int64_t>(dims[a] - 1, static_cast<std::int64_t>((x[a] - lo[a]) / radius));
+    return std::min<std::int64_t>(dims[a] - 1, static_cast<std::int64_t>((x[a] - lo[a]) / cell));
   };
   // Counting sort into cells: particles keep their index order inside a cell.
   std::vector<std::int64_t> cell_of(n);
@@ -50,31 +55,49 @@ void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_co
   auto visit = [&](std::size_t i, auto&& emit) {
     const Vec3d xi = points[i];
     const std::int64_t cx = cell_coord(xi, 0), cy = cell_coord(xi, 1), cz = cell_coord(xi, 2);
-    for (std::int64_t z = std::max<std::int64_t>(0, cz - 1); z <= std::min(dims[2] - 1, cz + 1); ++z)
-      for (std::int64_t y = std::max<std::int64_t>(0, cy - 1); y <= std::min(dims[1] - 1, cy + 1); ++y)
-        for (std::int64_t x = std::max<std::int64_t>(0, cx - 1); x <= std::min(dims[0] - 1, cx + 1); ++x) {
-          const std::int64_t c = (z * dims[1] + y) * dims[0] + x;
-          for (std::int64_t k = cell_start[c]; k < cell_start[c + 1]; ++k) {
-            const std::int32_t j = sorted[static_cast<std::size_t>(k)];
-            if (static_cast<std::size_t>(j) == i) continue;
-            if (norm2(xi - points[static_cast<std::size_t>(j)]) < r2max) emit(j);
-          }
+    for (std::int64_t z = std::max<std::int64_t>(0, cz - 2); z <= std::min(dims[2] - 1, cz + 2); ++z)
+      for (std::int64_t y = std::max<std::int64_t>(0, cy - 2); y <= std::min(dims[1] - 1, cy + 2); ++y) {
+        // Cells along x are contiguous in the sorted order: one run of particles per (y, z) row.
+        const std::int64_t row = (z * dims[1] + y) * dims[0];
+        const std::int64_t first = cell_start[row + std::max<std::int64_t>(0, cx - 2)];
+        const std::int64_t last = cell_start[row + std::min(dims[0] - 1, cx + 2) + 1];
+        for (std::int64_t k = first; k < last; ++k) {
+          const std::int32_t j = sorted[static_cast<std::size_t>(k)];
+          if (static_cast<std::size_t>(j) == i) continue;
+          if (norm2(xi - points[static_cast<std::size_t>(j)]) < r2max) emit(j);
         }
+      }
   };
 
+  // One pass: each thread gathers the rows of its contiguous block of queries into its own buffer; the
+  // buffers are then laid end to end in thread order, so the list is the same for any thread count.
   std::vector<std::int64_t> counts(query_count);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(query_count); ++i) {
-    std::int64_t c = 0;
-    visit(static_cast<std::size_t>(i), [&](std::int32_t) { ++c; });
-    counts[static_cast<std::size_t>(i)] = c;
+  std::vector<std::vector<std::int32_t>> buffers;
+  std::vector<std::size_t> block_start;
+#pragma omp parallel
+  {
+#pragma omp single
+    {
+      const std::size_t threads = static_cast<std::size_t>(omp_get_num_threads());
+      buffers.resize(threads);
+      block_start.resize(threads + 1);
+      for (std::size_t t = 0; t <= threads; ++t) block_start[t] = query_count * t / threads;
+    }
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+    std::vector<std::int32_t>& buf = buffers[t];
+    buf.reserve((block_start[t + 1] - block_start[t]) * 64);
+    for (std::size_t i = block_start[t]; i < block_start[t + 1]; ++i) {
+      const std::size_t before = buf.size();
+      visit(i, [&](std::int32_t j) { buf.push_back(j); });
+      counts[i] = static_cast<std::int64_t>(buf.size() - before);
+    }
   }
   for (std::size_t i = 0; i < query_count; ++i) out.offsets[i + 1] = out.offsets[i] + counts[i];
   out.indices.resize(static_cast<std::size_t>(out.offsets[query_count]));
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(query_count); ++i) {
-    std::int64_t k = out.offsets[static_cast<std::size_t>(i)];
-    visit(static_cast<std::size_t>(i), [&](std::int32_t j) { out.indices[static_cast<std::size_t>(k++)] = j; });
+#pragma omp parallel for schedule(static, 1)
+  for (std::int64_t t = 0; t < static_cast<std::int64_t>(buffers.size()); ++t) {
+    const std::vector<std::int32_t>& buf = buffers[static_cast<std::size_t>(t)];
+    std::copy(buf.begin(), buf.end(), out.indices.begin() + out.offsets[block_start[static_cast<std::size_t>(t)]]);
   }
 }
 

@@ -81,8 +81,9 @@ void ReferenceSolver::evaluate(const State& y, Rates& f) {
   // Fill the work arrays: real particles, then ghosts from their sources.
   x_.resize(total); v_.resize(total); rho_.resize(total); pressure_.resize(total); sound_speed_.resize(total);
   m_.resize(total); hh_.resize(total); mat_.resize(total); s_over_rho2_.resize(total); l_inverse_.resize(total);
-  grad_rho_.resize(total); grad_v_.resize(n);
-  std::vector<Sym3d> stress(total);
+  grad_rho_.resize(total); grad_v_.resize(n); volume_.resize(total);
+  std::vector<Sym3d>& stress = stress_;
+  stress.resize(total);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < ni; ++i) {
     x_[i] = y.pos[i]; v_[i] = y.vel[i]; rho_[i] = y.rho[i]; m_[i] = mass_[i]; hh_[i] = h_[i];
@@ -98,7 +99,9 @@ void ReferenceSolver::evaluate(const State& y, Rates& f) {
     pressure_[i] = pressure_[s]; sound_speed_[i] = sound_speed_[s];
     stress[i] = mirror(y.dev_stress[s], g.sign);
   }
-  for (std::size_t i = 0; i < total; ++i) {
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(total); ++i) {
+    volume_[i] = m_[i] / rho_[i];
     const double inv_rho2 = 1.0 / (rho_[i] * rho_[i]);
     const Sym3d& s = stress[i];
     s_over_rho2_[i] = inv_rho2 * Sym3d{s.xx - pressure_[i], s.yy - pressure_[i], s.zz - pressure_[i], s.xy, s.yz, s.zx};
@@ -123,7 +126,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f) {
       const double r = norm(xij);
       if (r >= kernel_support(hij)) continue;
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      const double vj = m_[j] / rho_[j];
+      const double vj = volume_[j];
       accumulate_correction(L, vj, gw, xij);
       G = G + vj * outer(v_[j] - vi, gw);
       gr += (vj * (rho_[j] - rhoi)) * gw;
@@ -176,7 +179,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f) {
       const Vec3d tg = T * gt;
       acc += m_[j] * tg;
       de -= 0.5 * m_[j] * dot(vij, tg);  // (v_j - v_i) . T gt
-      if (mat_[j] == mi) diffusion += delta_sph_term(m_[j] / rho_[j], rhoi, rho_[j], xij, gri, grad_rho_[j], gw);
+      if (mat_[j] == mi) diffusion += delta_sph_term(volume_[j], rhoi, rho_[j], xij, gri, grad_rho_[j], gw);
     }
     const double c0 = std::sqrt(eos_reference_sound_speed2(materials_[static_cast<std::size_t>(mi)].eos));
     f.drho[i] = -rhoi * grad_v_[i].trace() + delta * hi * c0 * diffusion;
@@ -255,28 +258,31 @@ std::size_t ReferenceSolver::velocity_gradients(const ParticleSet& p, std::vecto
 void ReferenceSolver::step(ParticleSet& p, double dt) {
   const std::size_t n = p.size();
   load_constants(p);
-  State y0{p.pos, p.vel, p.rho, p.energy, p.dev_stress};
+  State& y0 = y0_;
+  y0.pos = p.pos; y0.vel = p.vel; y0.rho = p.rho; y0.energy = p.energy; y0.dev_stress = p.dev_stress;
   double vmax = 0;
   for (std::size_t i = 0; i < n; ++i) vmax = std::max(vmax, norm(p.vel[i]));
   // Pairs can approach by at most dt vmax before the second evaluation (at y_1/2 each particle has moved
   // dt/2 |v_i|); the skin keeps every pair that can enter the support in the list.
   build_neighbours(y0.pos, dt * vmax * 1.01 + 1e-9 * h_max_);
 
-  Rates f;
-  State y_half, y1;
-  std::vector<double> plastic_increment;
+  Rates& f = rates_;
+  State& y_half = y_half_;
+  State& y1 = y1_;
+  std::vector<double>& plastic_increment = plastic_increment_;
   evaluate(y0, f);
   advance(y0, f, 0.5 * dt, y_half, nullptr);
   evaluate(y_half, f);
   advance(y0, f, dt, y1, &plastic_increment);
   check_state(y1, dt);
 
-  p.pos = std::move(y1.pos);
-  p.vel = std::move(y1.vel);
-  p.rho = std::move(y1.rho);
-  p.energy = std::move(y1.energy);
-  p.dev_stress = std::move(y1.dev_stress);
-  for (std::size_t i = 0; i < n; ++i) {
+  std::swap(p.pos, y1.pos);
+  std::swap(p.vel, y1.vel);
+  std::swap(p.rho, y1.rho);
+  std::swap(p.energy, y1.energy);
+  std::swap(p.dev_stress, y1.dev_stress);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
     p.plastic_strain[i] += plastic_increment[i];
     double c = 0;
     p.pressure[i] = eos_pressure(materials_[static_cast<std::size_t>(p.material[i])].eos, p.rho[i], p.energy[i], c);

@@ -71,11 +71,16 @@ class ReferenceSolver final : public Stepper {
   NeighbourList neighbours_;
   // Work arrays over real particles followed by ghosts.
   std::vector<Vec3d> x_, v_, grad_rho_;
-  std::vector<double> rho_, pressure_, sound_speed_, m_, hh_;
+  std::vector<double> rho_, pressure_, sound_speed_, m_, hh_, volume_;
   std::vector<std::int32_t> mat_;
   std::vector<Sym3d> s_over_rho2_;  // (S - P I) / rho^2 stored as a symmetric tensor
   std::vector<Mat3d> l_inverse_;
   std::vector<Mat3d> grad_v_;       // real particles only
+  std::vector<Sym3d> stress_;       // deviatoric stress of reals and ghosts
+  // Stage states and rates, kept between steps so that a step allocates nothing.
+  State y0_, y_half_, y1_;
+  Rates rates_;
+  std::vector<double> plastic_increment_;
   StepStats stats_;
 };
 
