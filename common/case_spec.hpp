@@ -48,6 +48,16 @@ struct SymmetryPlaneSpec {
   double position = 0;
 };
 
+// How two bodies interact. Pairs not listed share the SPH sums (particle approximation across bodies,
+// X section 2.2 "PAM"); a listed pair can instead use the penalty contact of F eqs 4.1-4.6.
+struct ContactSpec {
+  enum class Kind { Shared, Penalty } kind = Kind::Penalty;
+  std::string body_a, body_b;
+  int index_a = -1, index_b = -1;   // indices into CaseSpec::bodies
+  double penalty_scale = 0.3;       // K_p (F Table 3)
+  double contact_distance = 1.0;    // particles of the two bodies touch at this many spacings
+};
+
 struct NumericsSpec {
   double spacing = 0;          // particle spacing dx, m
   KernelKind kernel = KernelKind::WendlandC2;
@@ -78,6 +88,7 @@ struct CaseSpec {
   std::vector<BodySpec> bodies;
   std::vector<FixedRegionSpec> fixed;
   std::vector<SymmetryPlaneSpec> symmetry;
+  std::vector<ContactSpec> contacts;
   NumericsSpec numerics;
   TimeSpec time;
   OutputSpec output;

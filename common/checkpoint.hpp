@@ -13,7 +13,7 @@
 
 namespace impactsph {
 
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;
 
 struct CheckpointData {
   ParticleSet particles;

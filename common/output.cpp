@@ -248,9 +248,7 @@ void FrameSeriesWriter::write_frame(double time, std::int64_t index, const Parti
   scalar("von_mises", [&](std::size_t i) { return von_mises(p.dev_stress[i]); });
   point_data += tag("Float64", "plastic_strain", 1, data.add(p.plastic_strain.data(), n));
   point_data += tag("Float64", "damage", 1, data.add(p.damage.data(), n));
-  scalar("temperature", [&](std::size_t i) {
-    return temperature(materials[static_cast<std::size_t>(p.material[i])], p.energy[i]);
-  });
+  point_data += tag("Float64", "temperature", 1, data.add(p.temperature.data(), n));
   point_data += tag("Float64", "internal_energy", 1, data.add(p.energy.data(), n));
   point_data += tag("Float64", "smoothing_length", 1, data.add(p.h.data(), n));
   point_data += tag("Float64", "mass", 1, data.add(p.mass.data(), n));

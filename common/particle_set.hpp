@@ -24,6 +24,7 @@ struct ParticleSet {
   std::vector<Sym3d> dev_stress;      // deviatoric stress S, Pa
   std::vector<double> plastic_strain; // equivalent plastic strain
   std::vector<double> damage;         // D in [0, 1]
+  std::vector<double> temperature;    // K, raised by plastic work (F 3.14)
   std::vector<std::int32_t> body;     // index into Scene::bodies
   std::vector<std::int32_t> material; // index into Scene::materials
   std::vector<std::uint8_t> fixed;    // 1: clamped (velocity held at zero)
@@ -31,7 +32,8 @@ struct ParticleSet {
   std::size_t size() const { return pos.size(); }
   void resize(std::size_t n) {
     pos.resize(n); vel.resize(n); mass.resize(n); rho.resize(n); energy.resize(n); pressure.resize(n);
-    h.resize(n); dev_stress.resize(n); plastic_strain.resize(n); damage.resize(n); body.resize(n);
+    h.resize(n); dev_stress.resize(n); plastic_strain.resize(n); damage.resize(n);
+    temperature.resize(n); body.resize(n);
     material.resize(n); fixed.resize(n);
   }
 };
