@@ -66,16 +66,16 @@ void print_scene(const Scene& scene, double dt) {
   std::printf("spacing   %.6g mm, h = %.6g mm (h/dx = %.3g), kernel %s\n", s.numerics.spacing * 1e3,
               s.numerics.spacing * s.numerics.h_factor * 1e3, s.numerics.h_factor,
               s.numerics.kernel == KernelKind::WendlandC2 ? "Wendland C2" : "cubic spline");
-  std::printf("\n%-14s %-14s %-9s %10s %12s %10s\n", "body", "material", "shape", "particles", "mass [g]", "fixed");
+  std::printf("\n%-16s %-16s %-9s %10s %12s %10s\n", "body", "material", "shape", "particles", "mass [g]", "fixed");
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
     std::size_t fixed = 0;
     for (std::size_t i = 0; i < scene.particles.size(); ++i)
       if (scene.particles.body[i] == static_cast<int>(k) && scene.particles.fixed[i]) ++fixed;
     const BodyInfo& b = scene.bodies[k];
-    std::printf("%-14s %-14s %-9s %10zu %12.6g %10zu\n", b.name.c_str(), s.materials[b.material].name.c_str(),
+    std::printf("%-16s %-16s %-9s %10zu %12.6g %10zu\n", b.name.c_str(), s.materials[b.material].name.c_str(),
                 shape_name(s.bodies[k]), b.particle_count, b.initial_mass * 1e3, fixed);
   }
-  std::printf("%-14s %-14s %-9s %10zu\n", "total", "", "", scene.particles.size());
+  std::printf("%-16s %-16s %-9s %10zu\n", "total", "", "", scene.particles.size());
   for (const SymmetryPlaneSpec& p : s.symmetry)
     std::printf("symmetry  plane %c = %.6g mm\n", "xyz"[p.axis], p.position * 1e3);
   const double steps = dt > 0 ? s.time.end / dt : 0;
