@@ -323,8 +323,8 @@ void check_name(const Reporter& r, const toml::node* at, const std::string& key,
 // Materials
 
 const Keys kEosKinds{"linear", "polynomial", "mie-gruneisen", "gruneisen-cubic"};
-const Keys kStrengthKinds{"hydrodynamic", "elastic", "perfectly-plastic"};
-const Keys kDamageKinds{"none"};
+const Keys kStrengthKinds{"hydrodynamic", "elastic", "perfectly-plastic", "johnson-cook"};
+const Keys kDamageKinds{"none", "critical-plastic-strain", "johnson-cook"};
 
 void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
   const std::string kind = e.choice("kind", kEosKinds);
@@ -386,6 +386,38 @@ void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
   }
 }
 
+// A stress that must be between kMinModulus and kMaxModulus (a bare number is in Pa).
+double stress(const View& s, const std::string& k, const std::string& extra_hint = "") {
+  const double v = s.quantity(k, Dimension::Pressure);
+  s.range(k, v, kMinModulus, kMaxModulus, Dimension::Pressure, false, false, kModulusHint + extra_hint);
+  return v;
+}
+
+// The Johnson-Cook flow stress constants (F 3.12-3.13) of a strength table of kind "johnson-cook".
+void read_johnson_cook(const View& s, StrengthParams<double>& p) {
+  p.jc_a = stress(s, "a", "; A is the yield stress at zero plastic strain");
+  p.jc_b = s.quantity("b", Dimension::Pressure);
+  if (p.jc_b != 0)  // B = 0 (no hardening) is valid; a small non-zero B is a bare number meant in MPa
+    s.range("b", p.jc_b, kMinModulus, kMaxModulus, Dimension::Pressure, false, false,
+            std::string(kModulusHint) + "; b = 0 means no strain hardening");
+  p.jc_n = s.number("n");
+  s.range("n", p.jc_n, 0, 2, Dimension::Dimensionless, true);
+  p.jc_c = s.number_or("c", 0.0);
+  s.range("c", p.jc_c, 0, 1, Dimension::Dimensionless);
+  p.jc_m = s.number_or("m", 1.0);
+  s.range("m", p.jc_m, 0, 5, Dimension::Dimensionless, true);
+  p.reference_strain_rate = s.quantity_or("reference_strain_rate", Dimension::StrainRate, 1.0);
+  s.positive("reference_strain_rate", p.reference_strain_rate, Dimension::StrainRate);
+  p.melt_temperature = 0;  // 0: no thermal softening; checked against room_temperature by read_material
+  if (s.has("melt_temperature")) {
+    p.melt_temperature = s.quantity("melt_temperature", Dimension::Temperature);
+    s.positive("melt_temperature", p.melt_temperature, Dimension::Temperature);
+  }
+  p.taylor_quinney = s.number_or("taylor_quinney", 0.9);
+  s.range("taylor_quinney", p.taylor_quinney, 0, 1, Dimension::Dimensionless, false, false,
+          "the fraction of plastic work that heats the material");
+}
+
 // Returns the bulk modulus E/(3(1-2nu)) when the elastic constants were given as E and nu, else 0.
 double read_strength(const View& s, StrengthParams<double>& p) {
   const std::string kind = s.choice("kind", kStrengthKinds);
@@ -397,39 +429,80 @@ double read_strength(const View& s, StrengthParams<double>& p) {
   if (kind == "elastic") {
     s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio"});
     p.kind = StrengthKind::Elastic;
-  } else {
+  } else if (kind == "perfectly-plastic") {
     s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio", "yield_stress"});
     p.kind = StrengthKind::PerfectlyPlastic;
-    p.yield_stress = s.quantity("yield_stress", Dimension::Pressure);
-    s.range("yield_stress", p.yield_stress, kMinModulus, kMaxModulus, Dimension::Pressure, false, false,
-            std::string(kModulusHint) + "; a material without strength is kind = \"hydrodynamic\"");
+    p.yield_stress = stress(s, "yield_stress", "; a material without strength is kind = \"hydrodynamic\"");
+  } else {
+    s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio", "a", "b", "n", "c", "m",
+             "reference_strain_rate", "melt_temperature", "taylor_quinney"});
+    p.kind = StrengthKind::JohnsonCook;
   }
   const bool has_g = s.has("shear_modulus"), has_e = s.has("youngs_modulus"), has_nu = s.has("poisson_ratio");
   if (has_g && (has_e || has_nu))
     s.fail(has_e ? "youngs_modulus" : "poisson_ratio",
            "give either shear_modulus or youngs_modulus + poisson_ratio, not both");
+  double derived_k = 0;
   if (has_g) {
-    p.shear_modulus = s.quantity("shear_modulus", Dimension::Pressure);
-    s.range("shear_modulus", p.shear_modulus, kMinModulus, kMaxModulus, Dimension::Pressure, false, false, kModulusHint);
-    return 0;
+    p.shear_modulus = stress(s, "shear_modulus");
+  } else {
+    if (!has_e && !has_nu)
+      s.missing("shear_modulus", "expected shear_modulus = \"80 GPa\", or youngs_modulus = \"200 GPa\" with "
+                                 "poisson_ratio = 0.3");
+    if (!has_e) s.missing("youngs_modulus", "poisson_ratio needs youngs_modulus, e.g. \"200 GPa\"");
+    if (!has_nu) s.missing("poisson_ratio", "youngs_modulus needs poisson_ratio, e.g. 0.3");
+    const double E = stress(s, "youngs_modulus");
+    const double nu = s.number("poisson_ratio");
+    s.range("poisson_ratio", nu, -1, 0.5, Dimension::Dimensionless, true, true);
+    p.shear_modulus = E / (2 * (1 + nu));
+    derived_k = E / (3 * (1 - 2 * nu));
   }
-  if (!has_e && !has_nu)
-    s.missing("shear_modulus", "expected shear_modulus = \"80 GPa\", or youngs_modulus = \"200 GPa\" with "
-                               "poisson_ratio = 0.3");
-  if (!has_e) s.missing("youngs_modulus", "poisson_ratio needs youngs_modulus, e.g. \"200 GPa\"");
-  if (!has_nu) s.missing("poisson_ratio", "youngs_modulus needs poisson_ratio, e.g. 0.3");
-  const double E = s.quantity("youngs_modulus", Dimension::Pressure);
-  s.range("youngs_modulus", E, kMinModulus, kMaxModulus, Dimension::Pressure, false, false, kModulusHint);
-  const double nu = s.number("poisson_ratio");
-  s.range("poisson_ratio", nu, -1, 0.5, Dimension::Dimensionless, true, true);
-  p.shear_modulus = E / (2 * (1 + nu));
-  return E / (3 * (1 - 2 * nu));
+  if (p.kind == StrengthKind::JohnsonCook) read_johnson_cook(s, p);
+  return derived_k;
+}
+
+// The damage table; `strength` is the strength table, named when damage needs plasticity it lacks.
+void read_damage(const View& d, const StrengthParams<double>& strength, DamageParams<double>& p) {
+  const std::string kind = d.choice("kind", kDamageKinds);
+  if (kind == "none") {
+    d.allow({"kind"});
+    p.kind = DamageKind::None;
+    return;
+  }
+  if (strength.kind != StrengthKind::JohnsonCook && strength.kind != StrengthKind::PerfectlyPlastic)
+    d.fail("kind", "damage kind \"" + kind + "\" accumulates plastic strain, but the strength kind \"" +
+                       (strength.kind == StrengthKind::Elastic ? "elastic" : "hydrodynamic") +
+                       "\" has no plasticity; use strength kind \"johnson-cook\" or \"perfectly-plastic\", or "
+                       "damage kind \"none\"");
+  if (kind == "critical-plastic-strain") {
+    d.allow({"kind", "critical_plastic_strain"});
+    p.kind = DamageKind::CriticalPlasticStrain;
+    p.critical_plastic_strain = d.number("critical_plastic_strain");
+    d.range("critical_plastic_strain", p.critical_plastic_strain, 0, 10, Dimension::Dimensionless, true);
+    return;
+  }
+  d.allow({"kind", "d1", "d2", "d3", "d4", "d5", "min_failure_strain"});
+  p.kind = DamageKind::JohnsonCook;
+  const std::string why = "the Johnson-Cook failure constants are at most 20 in magnitude";
+  p.d1 = d.number("d1");
+  d.range("d1", p.d1, -1, 20, Dimension::Dimensionless, false, false, why);
+  p.d2 = d.number("d2");
+  d.range("d2", p.d2, 0, 20, Dimension::Dimensionless, false, false, why);
+  p.d3 = d.number("d3");
+  d.range("d3", p.d3, -20, 20, Dimension::Dimensionless, false, false, why);
+  p.d4 = d.number_or("d4", 0.0);
+  d.range("d4", p.d4, -20, 20, Dimension::Dimensionless, false, false, why);
+  p.d5 = d.number_or("d5", 0.0);
+  d.range("d5", p.d5, -20, 20, Dimension::Dimensionless, false, false, why);
+  p.min_failure_strain = d.number_or("min_failure_strain", 0.0);
+  d.range("min_failure_strain", p.min_failure_strain, 0, 10, Dimension::Dimensionless);
 }
 
 MaterialSpec read_material(const View& m, const std::string& name) {
   m.allow({"density", "eos", "strength", "damage", "specific_heat", "room_temperature"});
   MaterialSpec out;
   out.name = name;
+  out.line = line_of(&m.table());
   MaterialParams<double>& p = out.params;
   p.eos.rho0 = m.quantity("density", Dimension::Density);
   m.range("density", p.eos.rho0, 1, 30000, Dimension::Density);
@@ -452,9 +525,7 @@ MaterialSpec read_material(const View& m, const std::string& name) {
 
   if (m.has("damage")) {
     const View d = m.sub("damage", "the damage model of a material", "{ kind = \"none\" }");
-    d.choice("kind", kDamageKinds);
-    d.allow({"kind"});
-    p.damage.kind = DamageKind::None;
+    read_damage(d, p.strength, p.damage);
   }
   if (m.has("specific_heat")) {
     p.specific_heat = m.quantity("specific_heat", Dimension::SpecificHeat);
@@ -462,6 +533,16 @@ MaterialSpec read_material(const View& m, const std::string& name) {
   }
   p.room_temperature = m.quantity_or("room_temperature", Dimension::Temperature, 293.0);
   m.range("room_temperature", p.room_temperature, 0, 5000, Dimension::Temperature, true);
+  if (p.strength.melt_temperature > 0) {
+    if (!(p.strength.melt_temperature > p.room_temperature))
+      strength.fail("melt_temperature", "must be above room_temperature = " +
+                                            format_quantity(p.room_temperature, Dimension::Temperature) + " (got " +
+                                            format_quantity(p.strength.melt_temperature, Dimension::Temperature) + ")");
+    if (!(p.specific_heat > 0))
+      m.missing("specific_heat", "Johnson-Cook thermal softening (strength.melt_temperature) needs the temperature, "
+                                 "which plastic work raises by way of specific_heat = \"452 J/(kg K)\"; give it, or "
+                                 "leave out melt_temperature to turn thermal softening off");
+  }
   return out;
 }
 
@@ -577,6 +658,7 @@ std::vector<BodySpec> read_bodies(const View& root, const std::vector<MaterialSp
   for (std::size_t i = 0; i < a->size(); ++i) {
     const View b(root.values().reporter(), *a->get(i)->as_table(), "bodies[" + std::to_string(i) + "]", "a body");
     BodySpec body = read_body(b, materials);
+    body.line = line_of(a->get(i));
     for (std::size_t j = 0; j < out.size(); ++j)
       if (out[j].name == body.name)
         b.fail("name", "duplicate body name \"" + body.name + "\" (also bodies[" + std::to_string(j) +
@@ -602,6 +684,7 @@ void read_boundaries(const View& root, CaseSpec& spec) {
     for (std::size_t i = 0; i < a->size(); ++i) {
       const View f(r, *a->get(i)->as_table(), "boundaries.fixed[" + std::to_string(i) + "]", "a fixed region");
       FixedRegionSpec reg;
+      reg.line = line_of(a->get(i));
       const std::string region = f.choice("region", {"box", "outside-cylinder"});
       if (region == "box") {
         f.allow({"region", "body", "min", "max"});
@@ -629,6 +712,7 @@ void read_boundaries(const View& root, CaseSpec& spec) {
       const View s(r, *a->get(i)->as_table(), "boundaries.symmetry[" + std::to_string(i) + "]", "a symmetry plane");
       s.allow({"axis", "position"});
       SymmetryPlaneSpec plane;
+      plane.line = line_of(a->get(i));
       plane.axis = s.axis("axis");
       plane.position = s.quantity_or("position", Dimension::Length, 0.0);
       for (std::size_t j = 0; j < spec.symmetry.size(); ++j)
@@ -640,6 +724,64 @@ void read_boundaries(const View& root, CaseSpec& spec) {
   }
 }
 
+// Contact pairs: [[contacts]] with bodies = ["a", "b"], kind, penalty_scale, contact_distance.
+void read_contacts(const View& root, CaseSpec& spec) {
+  const toml::array* a = array_of_tables(root, "contacts", "bodies = [\"projectile\", \"plate\"] and kind = \"penalty\"");
+  if (!a) return;
+  const Reporter& r = root.values().reporter();
+  Keys body_names;
+  for (const BodySpec& b : spec.bodies) body_names.push_back(b.name);
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const View c(r, *a->get(i)->as_table(), "contacts[" + std::to_string(i) + "]", "a contact");
+    ContactSpec contact;
+    contact.line = line_of(a->get(i));
+    const std::string kind = c.choice("kind", {"penalty", "shared"}, "penalty");
+    if (kind == "penalty") c.allow({"bodies", "kind", "penalty_scale", "contact_distance"});
+    else c.allow({"bodies", "kind"});
+    contact.kind = kind == "penalty" ? ContactSpec::Kind::Penalty : ContactSpec::Kind::Shared;
+
+    const std::string example = "[\"projectile\", \"plate\"]";
+    const toml::node* n = c.find("bodies");
+    if (!n) c.missing("bodies", "expected the names of two bodies such as " + example);
+    const toml::array* pair = n->as_array();
+    if (!pair) c.fail("bodies", "expected an array of two body names such as " + example + ", not " + type_name(*n));
+    if (pair->size() != 2)
+      c.fail("bodies", "has " + std::to_string(pair->size()) + " entries; expected two body names such as " + example);
+    int index[2];
+    std::string name[2];
+    for (std::size_t j = 0; j < 2; ++j) {
+      const std::string key = c.key("bodies") + "[" + std::to_string(j) + "]";
+      name[j] = c.values().string(*pair->get(j), key, example);
+      const auto it = std::find(body_names.begin(), body_names.end(), name[j]);
+      if (it == body_names.end())
+        r.fail(pair->get(j), key, "no body named \"" + name[j] + "\";" + did_you_mean(name[j], body_names) +
+                                      " bodies: " + join_quoted(body_names));
+      index[j] = static_cast<int>(it - body_names.begin());
+    }
+    if (index[0] == index[1])
+      c.fail("bodies", "names \"" + name[0] + "\" twice; a contact is between two different bodies");
+    contact.body_a = name[0];
+    contact.body_b = name[1];
+    contact.index_a = index[0];
+    contact.index_b = index[1];
+    for (std::size_t j = 0; j < spec.contacts.size(); ++j) {
+      const ContactSpec& o = spec.contacts[j];
+      if ((o.index_a == index[0] && o.index_b == index[1]) || (o.index_a == index[1] && o.index_b == index[0]))
+        c.fail("bodies", "the pair \"" + name[0] + "\", \"" + name[1] + "\" is already listed in contacts[" +
+                             std::to_string(j) + "]; each pair is given once");
+    }
+    if (contact.kind == ContactSpec::Kind::Penalty) {
+      contact.penalty_scale = c.number_or("penalty_scale", 0.3);
+      c.range("penalty_scale", contact.penalty_scale, 0, 10, Dimension::Dimensionless, true, false,
+              "K_p scales the penalty force (F Table 3: 0.3)");
+      contact.contact_distance = c.number_or("contact_distance", 1.0);
+      c.range("contact_distance", contact.contact_distance, 0.5, 3, Dimension::Dimensionless, false, false,
+              "in particle spacings");
+    }
+    spec.contacts.push_back(contact);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------------
 // Case, numerics, time, output
 
@@ -648,6 +790,7 @@ void read_numerics(const View& root, NumericsSpec& num) {
   n.allow({"spacing", "kernel", "h_factor", "viscosity_linear", "viscosity_quadratic", "delta", "cfl",
            "correction_max_condition"});
   num.spacing = n.quantity("spacing", Dimension::Length);
+  num.spacing_line = line_of(n.find("spacing"));
   n.positive("spacing", num.spacing, Dimension::Length);
   const std::string kernel = n.choice("kernel", {"wendland-c2", "cubic-spline"}, "wendland-c2");
   num.kernel = kernel == "wendland-c2" ? KernelKind::WendlandC2 : KernelKind::CubicSpline;
@@ -690,7 +833,7 @@ void read_time(const View& root, TimeSpec& time) {
 
 CaseSpec read_case(const toml::table& tree, const Reporter& r) {
   const View root(r, tree, "", "the case file");
-  root.allow({"case", "materials", "bodies", "boundaries", "numerics", "time", "output"});
+  root.allow({"case", "materials", "bodies", "boundaries", "contacts", "numerics", "time", "output"});
   CaseSpec spec;
   spec.source_file = r.file();
 
@@ -703,6 +846,7 @@ CaseSpec read_case(const toml::table& tree, const Reporter& r) {
   spec.materials = read_materials(root);
   spec.bodies = read_bodies(root, spec.materials);
   read_boundaries(root, spec);
+  read_contacts(root, spec);
   read_numerics(root, spec.numerics);
   read_time(root, spec.time);
   if (const toml::node* n = root.find("output")) {

@@ -15,6 +15,7 @@ namespace impactsph {
 struct MaterialSpec {
   std::string name;
   MaterialParams<double> params;
+  int line = 0;            // line of [materials.NAME] in the case file, for messages (0: unknown)
 };
 
 enum class Shape { Box, Cylinder };
@@ -30,6 +31,7 @@ struct BodySpec {
   double radius = 0;       // Cylinder, m
   double length = 0;       // Cylinder: extent along +axis from the base, m
   Vec3d velocity{0, 0, 0}; // initial velocity, m/s
+  int line = 0;            // line of its [[bodies]] header in the case file, for messages (0: unknown)
 };
 
 // Particles inside the region are clamped (velocity held at zero).
@@ -40,12 +42,15 @@ struct FixedRegionSpec {
   Vec3d axis_point{0, 0, 0};  // OutsideCylinder: a point on the axis
   int axis = 2;               // OutsideCylinder: axis direction
   double radius = 0;          // OutsideCylinder: particles farther than this from the axis are fixed
+  int line = 0;               // line of its [[boundaries.fixed]] header, for messages (0: unknown)
 };
 
-// Mirror plane x_axis = position; the model lies on one side of it.
+// Mirror plane x_axis = position; the model lies on one side of it (build_scene decides which from the
+// bodies and clips bodies that reach across it to that side).
 struct SymmetryPlaneSpec {
   int axis = 0;
   double position = 0;
+  int line = 0;  // line of its [[boundaries.symmetry]] header, for messages (0: unknown)
 };
 
 // How two bodies interact. Pairs not listed share the SPH sums (particle approximation across bodies,
@@ -56,10 +61,12 @@ struct ContactSpec {
   int index_a = -1, index_b = -1;   // indices into CaseSpec::bodies
   double penalty_scale = 0.3;       // K_p (F Table 3)
   double contact_distance = 1.0;    // particles of the two bodies touch at this many spacings
+  int line = 0;                     // line of its [[contacts]] header, for messages (0: unknown)
 };
 
 struct NumericsSpec {
   double spacing = 0;          // particle spacing dx, m
+  int spacing_line = 0;        // line of numerics.spacing in the case file (0: unknown or overridden)
   KernelKind kernel = KernelKind::WendlandC2;
   double h_factor = 1.2;       // h = h_factor * dx (X: CSLH = 1.2)
   ViscosityParams<double> viscosity{1.0, 1.0};

@@ -43,7 +43,8 @@ class StopSignals {
 
 std::string format_seconds(double s) {
   char buf[64];
-  if (s < 1e-3) std::snprintf(buf, sizeof buf, "%.3g us", s * 1e6);
+  if (s < 1e-6) std::snprintf(buf, sizeof buf, "%.3g ns", s * 1e9);
+  else if (s < 1e-3) std::snprintf(buf, sizeof buf, "%.4g us", s * 1e6);
   else if (s < 1.0) std::snprintf(buf, sizeof buf, "%.4g ms", s * 1e3);
   else std::snprintf(buf, sizeof buf, "%.4g s", s);
   return buf;

@@ -69,10 +69,69 @@ IMPACTSPH_HD Sym3<Real> deviatoric_stress_rate(const MaterialParams<Real>& m, Sy
   return jaumann_stress_rate(S, grad_v, m.strength.shear_modulus);
 }
 
+// Johnson-Cook flow stress of a material's constants (F eqs 3.12-3.13, X eq 29), Pa:
+//   sigma_y = (A + B eps_p^n)(1 + C ln eps_dot*)(1 - T*^m),
+// eps_p the equivalent plastic strain, eps_rate the equivalent strain rate (1/s, equivalent_strain_rate),
+// T and T_room in K. eps_dot* = max(eps_rate/eps_dot0, 1): no rate softening below the reference rate.
+// T* = (T - T_room)/(T_melt - T_room) clamped to [0, 1]: zero strength at and above the melt; no thermal
+// softening when melt_temperature is 0 (F neglects thermal effects for its plates). See strength.hpp.
+template <class Real>
+IMPACTSPH_HD Real johnson_cook_yield(const StrengthParams<Real>& p, Real eps_p, Real eps_rate, Real T, Real T_room) {
+  return johnson_cook_flow_stress(p.jc_a, p.jc_b, p.jc_n, p.jc_c, p.jc_m, eps_p,
+                                  johnson_cook_rate_ratio(eps_rate, p.reference_strain_rate),
+                                  homologous_temperature(T, T_room, p.melt_temperature));
+}
+
+// What one plastic step did to a particle.
+template <class Real>
+struct PlasticResult {
+  Real d_eps_p;       // equivalent plastic strain increment, dimensionless (F eq 3.11)
+  Real d_T;           // adiabatic temperature increment, K (F eq 3.14 with a Taylor-Quinney factor)
+  Real plastic_work;  // plastic work per unit mass, sigma_y d_eps_p / rho, J/kg
+};
+
+// Plastic step after the elastic (trial) stress update: the von Mises radial return (F eqs 3.8-3.11 as
+// corrected in physics-notes) at the flow stress of the strength model:
+//   Hydrodynamic, Elastic: never yield, S untouched, result zero;
+//   PerfectlyPlastic: sigma_y = yield_stress;
+//   JohnsonCook: sigma_y = johnson_cook_yield at the current eps_p, eps_rate (1/s) and T (K), i.e. at the
+//     start of the increment. This explicit choice (no iteration for the hardening within the step) is
+//     the usual hydrocode one; the returned von Mises stress lags the hardened flow stress by
+//     d sigma_y/d eps_p x d_eps_p, an error of first order in the step.
+// After the return von_mises(S) = sigma_y and d_eps_p = (seq_trial - sigma_y)/(3 G). The plastic work per
+// unit mass is S:d eps_pl / rho = sigma_y d_eps_p / rho (J/kg; rho in kg/m^3), and the adiabatic heating
+// (F eq 3.14) d_T = taylor_quinney sigma_y d_eps_p / (rho c_p), zero when specific_heat is 0 (temperature
+// not tracked). A fully failed particle (damage >= 1) carries no deviatoric stress: S is set to zero and
+// no plastic strain or heat is counted (the same rule as apply_failure in damage.hpp). Partial damage
+// (damage < 1) leaves the flow stress unchanged: in F it acts through the pair kernel factor (F eq 4.10).
+template <class Real>
+IMPACTSPH_HD PlasticResult<Real> plastic_update(const MaterialParams<Real>& m, Sym3<Real>& S, Real eps_p, Real eps_rate,
+                                                Real T, Real rho, Real damage) {
+  PlasticResult<Real> r{Real(0), Real(0), Real(0)};
+  Real sigma_y;
+  if (m.strength.kind == StrengthKind::PerfectlyPlastic) {
+    sigma_y = m.strength.yield_stress;
+  } else if (m.strength.kind == StrengthKind::JohnsonCook) {
+    sigma_y = johnson_cook_yield(m.strength, eps_p, eps_rate, T, m.room_temperature);
+  } else {
+    return r;
+  }
+  if (damage >= Real(1)) {
+    S = Sym3<Real>::zero();
+    return r;
+  }
+  r.d_eps_p = radial_return(S, sigma_y, m.strength.shear_modulus);
+  if (rho > Real(0)) r.plastic_work = sigma_y * r.d_eps_p / rho;
+  if (m.specific_heat > Real(0)) r.d_T = m.strength.taylor_quinney * r.plastic_work / m.specific_heat;
+  return r;
+}
+
 // Plastic correction after the elastic stress update; returns the equivalent plastic strain increment.
+// Only PerfectlyPlastic yields here (its flow stress needs no state); a JohnsonCook material needs the
+// plastic strain, strain rate and temperature of plastic_update, and is left untouched by this function.
 template <class Real> IMPACTSPH_HD Real plastic_correction(const MaterialParams<Real>& m, Sym3<Real>& S) {
   if (m.strength.kind != StrengthKind::PerfectlyPlastic) return Real(0);
-  return radial_return(S, m.strength.yield_stress, m.strength.shear_modulus);
+  return plastic_update(m, S, Real(0), Real(0), m.room_temperature, m.eos.rho0, Real(0)).d_eps_p;
 }
 
 }  // namespace impactsph

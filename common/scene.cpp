@@ -103,21 +103,21 @@ std::vector<Vec3d> lattice(const CaseSpec& spec, std::size_t k, double dx) {
     for (int a = 0; a < 3; ++a) {
       const double extent = b.box_max[a] - b.box_min[a];
       if (!(extent > 0))
-        throw CaseError(spec.source_file, 0, key, "max." + std::string(1, axis_name(a)) + " must be greater than min");
+        throw CaseError(spec.source_file, b.line, key, "max." + std::string(1, axis_name(a)) + " must be greater than min");
       // 1e-9: an extent that is a whole number of cells up to rounding keeps its last layer.
       const double cells = std::floor(extent / dx + 1e-9);
       if (cells < 2)
-        throw CaseError(spec.source_file, 0, key,
+        throw CaseError(spec.source_file, b.line, key,
                         body_name(spec, k) + " is " + format_quantity(extent, Dimension::Length) + " thick along " +
                             axis_name(a) + thin_hint);
       if (cells > kMaxParticles)
-        throw CaseError(spec.source_file, 0, key, "too many particles at this spacing; use a coarser numerics.spacing");
+        throw CaseError(spec.source_file, b.line, key, "too many particles at this spacing; use a coarser numerics.spacing");
       n[a] = static_cast<long long>(cells);
       start[a] = b.box_min[a] + 0.5 * (extent - cells * dx) + 0.5 * dx;
     }
     const double count = double(n[0]) * double(n[1]) * double(n[2]);
     if (count > kMaxParticles)
-      throw CaseError(spec.source_file, 0, key,
+      throw CaseError(spec.source_file, b.line, key,
                       body_name(spec, k) + " would hold " + format_quantity(count, Dimension::Dimensionless) +
                           " particles at spacing " + format_quantity(dx, Dimension::Length) +
                           " (at most 1e9); use a coarser numerics.spacing");
@@ -131,17 +131,17 @@ std::vector<Vec3d> lattice(const CaseSpec& spec, std::size_t k, double dx) {
 
   // 1e-9: a length or diameter of exactly two cells up to rounding is accepted.
   if (b.length < 2 * dx * (1 - 1e-9))
-    throw CaseError(spec.source_file, 0, key,
+    throw CaseError(spec.source_file, b.line, key,
                     body_name(spec, k) + " is " + format_quantity(b.length, Dimension::Length) + " long" + thin_hint);
   if (b.radius < dx * (1 - 1e-9))
-    throw CaseError(spec.source_file, 0, key,
+    throw CaseError(spec.source_file, b.line, key,
                     body_name(spec, k) + " has a diameter of " + format_quantity(2 * b.radius, Dimension::Length) +
                         thin_hint);
   const double layers = std::round(b.length / dx);
   const double m = std::ceil(b.radius / dx);  // cross-section offsets (i + 1/2) dx for i in [-m, m)
   const double estimate = layers * Constants<double>::pi * sqr(b.radius / dx);
   if (estimate > kMaxParticles)
-    throw CaseError(spec.source_file, 0, key,
+    throw CaseError(spec.source_file, b.line, key,
                     body_name(spec, k) + " would hold about " + format_quantity(estimate, Dimension::Dimensionless) +
                         " particles at spacing " + format_quantity(dx, Dimension::Length) +
                         " (at most 1e9); use a coarser numerics.spacing");
@@ -184,7 +184,7 @@ void check_overlaps(const CaseSpec& spec, const ParticleSet& ps, const std::vect
       for (std::size_t i = first[a]; i < first[a + 1]; ++i)
         if (sb.contains(ps.pos[i]) && strictly_inside(spec.bodies[b], ps.pos[i], eps)) {
           const std::size_t later = std::max(a, b), earlier = std::min(a, b);
-          throw CaseError(spec.source_file, 0, body_key(later),
+          throw CaseError(spec.source_file, spec.bodies[later].line, body_key(later),
                           body_name(spec, later) + " overlaps " + body_label(spec, earlier) + ": the particle of \"" +
                               spec.bodies[a].name + "\" at " + point(ps.pos[i]) + " lies inside \"" +
                               spec.bodies[b].name + "\"; bodies must not overlap");
@@ -221,7 +221,7 @@ void check_overlaps(const CaseSpec& spec, const ParticleSet& ps, const std::vect
               for (const std::size_t j : it->second) {
                 const double d = norm(p - ps.pos[j]);
                 if (d < min_d - eps)
-                  throw CaseError(spec.source_file, 0, body_key(b),
+                  throw CaseError(spec.source_file, spec.bodies[b].line, body_key(b),
                                   body_name(spec, b) + " overlaps " + body_label(spec, a) + ": its particle at " +
                                       point(p) + " is " + format_quantity(d, Dimension::Length) + " from one of \"" +
                                       spec.bodies[a].name + "\" at " + point(ps.pos[j]) +

@@ -1,6 +1,7 @@
 // Deviatoric stress: hypo-elastic Hooke law with the Jaumann rate (F eqs 3.5-3.7) and the von Mises
-// radial return (F eqs 3.8-3.11, with the yield function corrected as in physics-notes).
-// Units: stress in Pa, rates in 1/s, G in Pa.
+// radial return (F eqs 3.8-3.11, with the yield function corrected as in physics-notes), and the pieces of
+// the Johnson-Cook flow stress (F eqs 3.12-3.13, X eq 29) that need no material struct.
+// Units: stress in Pa, rates in 1/s, G in Pa, temperatures in K.
 #pragma once
 #include "common/tensor.hpp"
 
@@ -33,6 +34,50 @@ IMPACTSPH_HD Real radial_return(Sym3<Real>& S, Real yield_stress, Real shear_mod
   const Real cy = yield_stress > Real(0) ? yield_stress / seq : Real(0);
   S = cy * S;
   return (Real(1) - cy) * seq / (Real(3) * shear_modulus);
+}
+
+// Equivalent strain rate of a velocity gradient, sqrt(2/3 d':d') with d' the deviator of the strain rate
+// d = sym(grad v) (1/s). It is the rate that reads eps_dot for a uniaxial-stress test of an incompressible
+// material (d = eps_dot diag(1, -1/2, -1/2)); a rigid spin or a pure volume change gives 0. This is the
+// total, not the plastic, strain rate: the strain-rate measure of X eq 29 and of LS-DYNA's Johnson-Cook;
+// F eq 3.12 writes the plastic rate, which is not known before the return and is zero in elastic steps.
+template <class Real> IMPACTSPH_HD Real equivalent_strain_rate(const Mat3<Real>& grad_v) {
+  const Sym3<Real> d = deviator(strain_rate(grad_v));
+  return std::sqrt(Real(2) / Real(3) * ddot(d, d));
+}
+
+// Normalised strain rate of the Johnson-Cook laws (F eqs 3.12 and 4.7, X eqs 29 and 33):
+// eps_dot* = max(eps_rate / eps_dot0, 1), dimensionless. The clamp at 1 means no rate softening below the
+// reference rate: ln(eps_dot*) < 0 would lower the flow stress (C > 0) and diverge at rest (ln 0). The
+// usual hydrocode choice. A reference rate <= 0 turns the rate dependence off (eps_dot* = 1).
+template <class Real> IMPACTSPH_HD Real johnson_cook_rate_ratio(Real eps_rate, Real reference_strain_rate) {
+  if (!(reference_strain_rate > Real(0))) return Real(1);
+  return max_of(eps_rate / reference_strain_rate, Real(1));
+}
+
+// Homologous temperature of the Johnson-Cook laws (F eq 3.13, X after eq 29):
+// T* = (T - T_room)/(T_melt - T_room), clamped to [0, 1] (dimensionless; temperatures in K). Below room
+// temperature there is no extra hardening (T* = 0); at and above the melt T* = 1, where the flow stress
+// vanishes. T_melt <= T_room (in particular the default T_melt = 0) turns thermal softening off (T* = 0).
+template <class Real> IMPACTSPH_HD Real homologous_temperature(Real T, Real room_temperature, Real melt_temperature) {
+  if (!(melt_temperature > room_temperature)) return Real(0);
+  const Real t = (T - room_temperature) / (melt_temperature - room_temperature);
+  return min_of(max_of(t, Real(0)), Real(1));
+}
+
+// Johnson-Cook flow stress (F eqs 3.12-3.13, X eq 29), Pa:
+//   sigma_y = (A + B eps_p^n)(1 + C ln eps_dot*)(1 - T*^m),
+// with A, B in Pa, eps_p the equivalent plastic strain (negative values read as 0), eps_dot* and T* from
+// johnson_cook_rate_ratio and homologous_temperature. eps_p^n is taken as 0 at eps_p = 0 (n > 0: the
+// limit; no pow(0, n) or log(0) is evaluated) and T*^m as 0 at T* = 0. Never negative: a negative rate
+// factor (C < 0 at extreme rates) gives 0.
+template <class Real>
+IMPACTSPH_HD Real johnson_cook_flow_stress(Real a, Real b, Real n, Real c, Real m, Real eps_p, Real eps_rate_star,
+                                           Real t_star) {
+  const Real hardening = eps_p > Real(0) ? a + b * std::pow(eps_p, n) : a;
+  const Real rate = eps_rate_star > Real(1) ? Real(1) + c * std::log(eps_rate_star) : Real(1);
+  const Real thermal = t_star > Real(0) ? Real(1) - std::pow(t_star, m) : Real(1);
+  return max_of(hardening * rate * thermal, Real(0));
 }
 
 }  // namespace impactsph

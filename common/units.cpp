@@ -35,6 +35,7 @@ constexpr Dim kTemperature{0, 0, 0, 1};
 constexpr Dim kSpecificEnergy{0, 2, -2, 0};
 constexpr Dim kEnergy{1, 2, -2, 0};
 constexpr Dim kForce{1, 1, -2, 0};
+constexpr Dim kStrainRate{0, 0, -1, 0};
 
 Dim dim_of(Dimension d) {
   switch (d) {
@@ -48,6 +49,7 @@ Dim dim_of(Dimension d) {
     case Dimension::SpecificHeat: return kSpecificHeat;
     case Dimension::Temperature: return kTemperature;
     case Dimension::SpecificEnergy: return kSpecificEnergy;
+    case Dimension::StrainRate: return kStrainRate;
   }
   return kNone;
 }
@@ -111,7 +113,7 @@ std::string describe(Dim d) {
       {kSpecificEnergy, "a specific energy"}, {kEnergy, "an energy"},
       {kForce, "a force"},            {{0, 2, 0, 0}, "an area"},
       {{0, 3, 0, 0}, "a volume"},     {{0, 1, -2, 0}, "an acceleration"},
-      {{0, 0, -1, 0}, "a rate (1/s)"}, {kNone, "a bare number"},
+      {kStrainRate, "a rate (1/s)"}, {kNone, "a bare number"},
   };
   for (const Named& n : kNamed)
     if (n.dim == d) return n.name;
@@ -156,7 +158,7 @@ struct UnitValue {
 };
 
 // Recursive descent over the unit text:
-//   expr    := product ('/' product)*
+//   expr    := (product | '1' | ) ('/' product)*   (a missing numerator is 1: "/s", "1/s")
 //   product := power (['*'] power)*        (a space between two factors multiplies)
 //   power   := atom ['^' signed-int | int]
 //   atom    := identifier | '(' expr ')'
@@ -183,7 +185,13 @@ class UnitParser {
   }
 
   UnitValue expr() {
-    UnitValue v = product();
+    UnitValue v;  // a numerator of 1, written "1" or left out, as in "1/s" and "/s"
+    if (peek() == '1' && (pos_ + 1 >= s_.size() || !std::isdigit(static_cast<unsigned char>(s_[pos_ + 1])))) {
+      ++pos_;
+      if (peek() != '/') fail_syntax("a \"1\" must be followed by \"/\", as in \"1/s\"");
+    } else if (peek() != '/') {
+      v = product();
+    }
     while (peek() == '/') {
       ++pos_;
       const UnitValue d = product();
@@ -335,6 +343,7 @@ std::string dimension_name(Dimension d) {
     case Dimension::SpecificHeat: return "specific heat";
     case Dimension::Temperature: return "temperature";
     case Dimension::SpecificEnergy: return "specific energy";
+    case Dimension::StrainRate: return "strain rate";
   }
   return "quantity";
 }
@@ -351,6 +360,7 @@ std::string dimension_example(Dimension d) {
     case Dimension::SpecificHeat: return "452 J/(kg K)";
     case Dimension::Temperature: return "293 K";
     case Dimension::SpecificEnergy: return "1e5 J/kg";
+    case Dimension::StrainRate: return "1 /s";
   }
   return "";
 }
@@ -367,6 +377,7 @@ std::string dimension_units(Dimension d) {
     case Dimension::SpecificHeat: return "J/(kg K), J/kg/K, kJ/(kg K); a bare number is J/(kg K)";
     case Dimension::Temperature: return "K, absolute; a bare number is K";
     case Dimension::SpecificEnergy: return "J/kg, kJ/kg, MJ/kg; a bare number is J/kg";
+    case Dimension::StrainRate: return "1/s, /s, s^-1, 1/ms, 1/us; a bare number is 1/s";
   }
   return "";
 }
@@ -425,6 +436,7 @@ std::string format_quantity(double v, Dimension d) {
     case Dimension::SpecificHeat: unit = "J/(kg K)"; break;
     case Dimension::Temperature: unit = "K"; break;
     case Dimension::SpecificEnergy: unit = "J/kg"; break;
+    case Dimension::StrainRate: unit = "/s"; break;
   }
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", v / scale);

@@ -23,7 +23,8 @@ enum class Dimension {
   Mass,            // kg
   SpecificHeat,    // J/(kg K)
   Temperature,     // K (absolute only: no degrees Celsius, whose zero is offset)
-  SpecificEnergy   // J/kg
+  SpecificEnergy,  // J/kg
+  StrainRate       // 1/s (written "1/s", "/s" or "s^-1": "1e-3 /s", "1 1/s", "1 s^-1")
 };
 
 // "length", "velocity", ... as used in messages ("expected a length").

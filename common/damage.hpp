@@ -1,0 +1,77 @@
+// Damage and failure (F section 4.2, X eqs 32-34): the Johnson-Cook failure strain, the damage increment
+// of the chosen damage model, what a failed particle may still carry, and the damaged pair factor.
+// D is dimensionless in [0, 1]; stresses and pressures in Pa, strain rates in 1/s, temperatures in K.
+#pragma once
+#include "common/material.hpp"
+
+namespace impactsph {
+
+// Stress triaxiality sigma* = sigma_m / sigma_eq (F after eq 4.7, X eq 34), with the mean stress
+// sigma_m = -P (P > 0 in compression) and sigma_eq the von Mises stress (Pa). Dimensionless; defined as 0
+// when sigma_eq == 0 (no deviatoric stress: the ratio has no meaning, and 0 is the pure-shear value).
+template <class Real> IMPACTSPH_HD Real stress_triaxiality(Real P, Real sigma_eq) {
+  return sigma_eq > Real(0) ? -P / sigma_eq : Real(0);
+}
+
+// Largest exponent D3 sigma* used in exp(): exp(80) ~ 5.5e34 fits a float. Beyond it the failure strain is
+// astronomically large either way; the cap keeps it finite so that D2 = 0 never meets 0 x inf.
+template <class Real> IMPACTSPH_HD Real failure_exponent_cap() { return Real(80); }
+
+// Johnson-Cook failure strain (F eq 4.7) bounded below by the minimum failure strain (X eq 33):
+//   eps_f = max([D1 + D2 exp(D3 sigma*)] [1 + D4 ln eps_dot*] [1 + D5 T*], eps_f_min),
+// sigma* the triaxiality (stress_triaxiality), eps_dot* the normalised strain rate, T* the homologous
+// temperature. As in the flow stress (johnson_cook_rate_ratio, homologous_temperature), eps_dot* is read
+// as max(eps_dot*, 1) (no rate effect below the reference rate, no ln 0) and T* is clamped to [0, 1].
+// Dimensionless. It can be <= 0 only for unphysical constants with eps_f_min = 0; damage_increment then
+// fails the particle at its first plastic increment.
+template <class Real>
+IMPACTSPH_HD Real johnson_cook_failure_strain(const DamageParams<Real>& d, Real triaxiality, Real eps_rate_star,
+                                              Real T_star) {
+  const Real expo = min_of(d.d3 * triaxiality, failure_exponent_cap<Real>());
+  const Real stress_part = d.d1 + d.d2 * std::exp(expo);
+  const Real rate_part = eps_rate_star > Real(1) ? Real(1) + d.d4 * std::log(eps_rate_star) : Real(1);
+  const Real t = min_of(max_of(T_star, Real(0)), Real(1));
+  const Real thermal_part = Real(1) + d.d5 * t;
+  return max_of(stress_part * rate_part * thermal_part, d.min_failure_strain);
+}
+
+// Damage increment of one step, to be added to D (the caller keeps D = min(D + increment, 1)):
+//   None: 0;
+//   CriticalPlasticStrain (F eq 4.9): 1 once the plastic strain after the step eps_p_after >= eps_c,
+//     else 0 (D jumps from 0 to 1; eps_c must be > 0, or the material fails at once);
+//   JohnsonCook (F eq 4.8, X eq 32): d_eps_p / eps_f, eps_f of johnson_cook_failure_strain at the
+//     triaxiality -P/sigma_eq (P and sigma_eq in Pa), eps_dot* = max(eps_rate/eps_dot0, 1) with the
+//     strength model's reference rate, and T* from the strength model's melt temperature and the
+//     material's room temperature (T in K). 1 when eps_f <= 0 and the step is plastic.
+// No damage without plastic flow (d_eps_p <= 0) in the JohnsonCook model. Dimensionless.
+template <class Real>
+IMPACTSPH_HD Real damage_increment(const MaterialParams<Real>& m, Real d_eps_p, Real eps_p_after, Real P, Real sigma_eq,
+                                   Real eps_rate, Real T) {
+  if (m.damage.kind == DamageKind::CriticalPlasticStrain)
+    return eps_p_after >= m.damage.critical_plastic_strain ? Real(1) : Real(0);
+  if (m.damage.kind != DamageKind::JohnsonCook || !(d_eps_p > Real(0))) return Real(0);
+  const Real eps_f = johnson_cook_failure_strain(
+      m.damage, stress_triaxiality(P, sigma_eq), johnson_cook_rate_ratio(eps_rate, m.strength.reference_strain_rate),
+      homologous_temperature(T, m.room_temperature, m.strength.melt_temperature));
+  if (!(eps_f > Real(0))) return Real(1);
+  return d_eps_p / eps_f;
+}
+
+// A fully failed particle (D >= 1; F section 4.2, physics-notes) carries no deviatoric stress and no
+// tension: S = 0 and P = max(P, 0) (Pa). It still resists compression, so failed fragments do not
+// interpenetrate. A particle with D < 1 is left unchanged.
+template <class Real> IMPACTSPH_HD void apply_failure(Sym3<Real>& S, Real& P, Real D) {
+  if (!(D >= Real(1))) return;
+  S = Sym3<Real>::zero();
+  P = max_of(P, Real(0));
+}
+
+// Damaged interaction (F eq 4.10): the kernel and its gradient between i and j are scaled by
+// 1 - D_ij, D_ij = (D_i + D_j)/2, clamped to [0, 1] (dimensionless): two failed particles no longer
+// interact, an intact pair is unaffected.
+template <class Real> IMPACTSPH_HD Real damaged_pair_factor(Real Di, Real Dj) {
+  const Real f = Real(1) - Real(0.5) * (Di + Dj);
+  return min_of(max_of(f, Real(0)), Real(1));
+}
+
+}  // namespace impactsph
