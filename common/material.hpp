@@ -30,7 +30,7 @@ struct StrengthParams {
   Real jc_a = 0, jc_b = 0, jc_n = 1, jc_c = 0, jc_m = 1;  // A, B in Pa
   Real reference_strain_rate = 1;  // eps_dot0, 1/s
   Real melt_temperature = 0;       // T_melt, K (0: no thermal softening)
-  Real taylor_quinney = 0.9;       // fraction of plastic work that heats (F 3.14)
+  Real taylor_quinney = Real(0.9);  // fraction of plastic work that heats (F 3.14)
 };
 
 template <class Real>

@@ -68,13 +68,14 @@ template <class Real> IMPACTSPH_HD Real homologous_temperature(Real T, Real room
 // Johnson-Cook flow stress (F eqs 3.12-3.13, X eq 29), Pa:
 //   sigma_y = (A + B eps_p^n)(1 + C ln eps_dot*)(1 - T*^m),
 // with A, B in Pa, eps_p the equivalent plastic strain (negative values read as 0), eps_dot* and T* from
-// johnson_cook_rate_ratio and homologous_temperature. eps_p^n is taken as 0 at eps_p = 0 (n > 0: the
-// limit; no pow(0, n) or log(0) is evaluated) and T*^m as 0 at T* = 0. Never negative: a negative rate
-// factor (C < 0 at extreme rates) gives 0.
+// johnson_cook_rate_ratio and homologous_temperature. eps_p^n at eps_p = 0 is its limit from above: 0 for
+// n > 0, 1 for n = 0 (constant B: no jump at the first plastic step); pow and log are never called at 0.
+// T*^m is 0 at T* = 0. Never negative: a negative rate factor (C < 0 at extreme rates) gives 0.
 template <class Real>
 IMPACTSPH_HD Real johnson_cook_flow_stress(Real a, Real b, Real n, Real c, Real m, Real eps_p, Real eps_rate_star,
                                            Real t_star) {
-  const Real hardening = eps_p > Real(0) ? a + b * std::pow(eps_p, n) : a;
+  const Real eps_n = eps_p > Real(0) ? std::pow(eps_p, n) : (n > Real(0) ? Real(0) : Real(1));
+  const Real hardening = a + b * eps_n;
   const Real rate = eps_rate_star > Real(1) ? Real(1) + c * std::log(eps_rate_star) : Real(1);
   const Real thermal = t_star > Real(0) ? Real(1) - std::pow(t_star, m) : Real(1);
   return max_of(hardening * rate * thermal, Real(0));
