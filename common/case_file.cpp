@@ -400,7 +400,7 @@ void read_johnson_cook(const View& s, StrengthParams<double>& p) {
   if (p.jc_b != 0)  // B = 0 (no hardening) is valid; a small non-zero B is a bare number meant in MPa
     s.range("b", p.jc_b, kMinModulus, kMaxModulus, Dimension::Pressure, false, false,
             std::string(kModulusHint) + "; b = 0 means no strain hardening");
-  p.jc_n = s.number("n");
+  p.jc_n = p.jc_b > 0 ? s.number("n") : s.number_or("n", 1.0);  // n is needed only with hardening
   s.range("n", p.jc_n, 0, 2, Dimension::Dimensionless, true);
   p.jc_c = s.number_or("c", 0.0);
   s.range("c", p.jc_c, 0, 1, Dimension::Dimensionless);

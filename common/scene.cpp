@@ -1,6 +1,7 @@
 // Scene builder: fills each body of a CaseSpec with particles on a regular cubic lattice of spacing dx,
-// then checks the geometry (overlaps, symmetry planes, fixed regions) and throws CaseError naming the
-// body or boundary when it is impossible. Particles are stored body by body in file order, each body in
+// clips bodies that reach across a symmetry plane to the model side of it (quarter and half models),
+// then checks the geometry (overlaps, symmetry planes, fixed regions, contact pairs) and throws CaseError
+// naming the body or boundary, with the line of its table in the case file, when it is impossible. Particles are stored body by body in file order, each body in
 // lattice order (the first cross-section axis fastest, the third slowest), so the same case always gives
 // the same particle numbering (design.md, "Deterministic").
 //
@@ -233,42 +234,91 @@ void check_overlaps(const CaseSpec& spec, const ParticleSet& ps, const std::vect
     }
 }
 
-// The model lies on one side of every symmetry plane (either side; two planes on one axis bound a
-// channel); the solver mirrors the particles near the plane to the other side. A particle on the plane,
-// a body across it, or bodies on both sides of it would overlap their own mirror images.
-void check_symmetry(const CaseSpec& spec, const std::vector<std::size_t>& first,
-                    const std::vector<Box3>& bounds, double dx) {
+// The model lies on one side of every symmetry plane (two planes on one axis bound a channel); the
+// solver mirrors the particles near the plane to the other side. For each plane the side is decided
+// from the bodies: a body whose particles all lie on one side decides it (the first such body in file
+// order; a body wholly on the other side is an error); when every body reaches across the plane, it is
+// the side holding more of their particles, the positive side on a tie. Then every body keeps only its
+// particles on the model side of every plane, in lattice order, so a cylinder whose axis lies in two
+// planes becomes an exact quarter. A kept particle closer than dx/4 to a plane (one on the plane
+// included) would lie closer than dx/2 to its own mirror image, the overlap rule between bodies.
+void clip_to_symmetry(const CaseSpec& spec, std::vector<std::vector<Vec3d>>& pts, double dx) {
   const double eps = 1e-9 * dx;
+  const std::size_t nb = spec.bodies.size();
+  std::vector<int> side(spec.symmetry.size(), 0);
+  auto where = [&](std::size_t s) {
+    const SymmetryPlaneSpec& plane = spec.symmetry[s];
+    return std::string(1, axis_name(plane.axis)) + " = " + format_quantity(plane.position, Dimension::Length) +
+           " (boundaries.symmetry[" + std::to_string(s) + "])";
+  };
   for (std::size_t s = 0; s < spec.symmetry.size(); ++s) {
     const SymmetryPlaneSpec& plane = spec.symmetry[s];
     const int a = plane.axis;
     if (a < 0 || a > 2)
-      throw CaseError(spec.source_file, 0, "boundaries.symmetry[" + std::to_string(s) + "].axis",
+      throw CaseError(spec.source_file, plane.line, "boundaries.symmetry[" + std::to_string(s) + "].axis",
                       "must be x, y or z");
-    const std::string axis(1, axis_name(a));
-    const std::string where = axis + " = " + format_quantity(plane.position, Dimension::Length) +
-                              " (boundaries.symmetry[" + std::to_string(s) + "])";
-    std::size_t first_body = spec.bodies.size();  // the first body with particles decides the side
-    int side = 0;
-    for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
-      if (first[k] == first[k + 1]) continue;
-      const double lo = bounds[k].lo[a], hi = bounds[k].hi[a];
-      const int this_side = lo > plane.position + eps ? 1 : (hi < plane.position - eps ? -1 : 0);
-      if (this_side == 0)
-        throw CaseError(spec.source_file, 0, body_key(k),
-                        body_name(spec, k) + " reaches across the symmetry plane " + where + ": its particles span " +
-                            axis + " from " + format_quantity(lo, Dimension::Length) + " to " +
-                            format_quantity(hi, Dimension::Length) +
-                            "; the model must lie on one side of the plane (its mirror image is the other side)");
-      if (first_body == spec.bodies.size()) {
+    std::size_t first_body = nb;  // the first body wholly on one side decides the side
+    std::size_t plus = 0, minus = 0;  // particles on either side, for when every body reaches across
+    for (std::size_t k = 0; k < nb; ++k) {
+      std::size_t above = 0, below = 0;
+      for (const Vec3d& p : pts[k]) {
+        if (p[a] > plane.position + eps) ++above;
+        if (p[a] < plane.position - eps) ++below;
+      }
+      plus += above;
+      minus += below;
+      const int this_side = above == pts[k].size() ? 1 : (below == pts[k].size() ? -1 : 0);
+      if (this_side == 0 || pts[k].empty()) continue;
+      if (first_body == nb) {
         first_body = k;
-        side = this_side;
-      } else if (this_side != side) {
-        throw CaseError(spec.source_file, 0, body_key(k),
-                        body_name(spec, k) + " lies on the other side of the symmetry plane " + where + " from " +
+        side[s] = this_side;
+      } else if (this_side != side[s]) {
+        throw CaseError(spec.source_file, spec.bodies[k].line, body_key(k),
+                        body_name(spec, k) + " lies on the other side of the symmetry plane " + where(s) + " from " +
                             body_label(spec, first_body) + "; the model must lie on one side of the plane");
       }
     }
+    if (side[s] == 0) side[s] = plus >= minus ? 1 : -1;
+  }
+  if (spec.symmetry.empty()) return;
+
+  auto model_side = [&]() {
+    std::string out;
+    for (std::size_t s = 0; s < spec.symmetry.size(); ++s)
+      out += (out.empty() ? "" : ", ") + std::string(1, axis_name(spec.symmetry[s].axis)) +
+             (side[s] > 0 ? " > " : " < ") + format_quantity(spec.symmetry[s].position, Dimension::Length);
+    return out;
+  };
+  const double min_d = 0.25 * dx;
+  for (std::size_t k = 0; k < nb; ++k) {
+    std::vector<Vec3d> kept;
+    kept.reserve(pts[k].size());
+    for (const Vec3d& p : pts[k]) {
+      bool keep = true;
+      std::size_t closest = 0;
+      double closest_d = 1e300;
+      for (std::size_t s = 0; s < spec.symmetry.size(); ++s) {
+        const double d = side[s] * (p[spec.symmetry[s].axis] - spec.symmetry[s].position);
+        if (d < -eps) keep = false;
+        if (d < closest_d) closest_d = d, closest = s;
+      }
+      if (!keep) continue;
+      if (closest_d < min_d - eps)
+        throw CaseError(spec.source_file, spec.bodies[k].line, body_key(k),
+                        "the particle of " + body_name(spec, k) + " at " + point(p) + " is " +
+                            format_quantity(std::max(closest_d, 0.0), Dimension::Length) + " from the symmetry plane " +
+                            where(closest) + ", closer than half the spacing (" +
+                            format_quantity(2 * min_d, Dimension::Length) +
+                            ") to its own mirror image; the plane must lie halfway between two layers of the "
+                            "body's lattice (for a cylinder cut by the plane: its axis in the plane)");
+      kept.push_back(p);
+    }
+    if (kept.empty() && !pts[k].empty())
+      throw CaseError(spec.source_file, spec.bodies[k].line, body_key(k),
+                      body_name(spec, k) + " would be clipped to nothing: none of its particles lies on the model "
+                                           "side of every symmetry plane (" + model_side() +
+                          "); move it, or remove it from the model");
+    pts[k] = std::move(kept);
   }
 }
 
@@ -306,7 +356,7 @@ void mark_fixed(const CaseSpec& spec, ParticleSet& ps, const std::vector<std::si
     if (!any_body) {
       std::string names;
       for (const BodySpec& b : spec.bodies) names += (names.empty() ? "\"" : ", \"") + b.name + "\"";
-      throw CaseError(spec.source_file, 0, key + ".body", "no body named \"" + r.body + "\"; bodies: " + names);
+      throw CaseError(spec.source_file, r.line, key + ".body", "no body named \"" + r.body + "\"; bodies: " + names);
     }
     if (selected == 0) {
       const std::string region =
@@ -314,10 +364,47 @@ void mark_fixed(const CaseSpec& spec, ParticleSet& ps, const std::vector<std::si
               ? "the box from " + point(r.box_min) + " to " + point(r.box_max)
               : "the outside of the cylinder of radius " + format_quantity(r.radius, Dimension::Length) + " about the " +
                     std::string(1, axis_name(r.axis)) + " axis through " + point(r.axis_point);
-      throw CaseError(spec.source_file, 0, key,
+      throw CaseError(spec.source_file, r.line, key,
                       "selects no particle: " + region + " holds none of the particles of " +
                           (r.body.empty() ? std::string("any body") : "\"" + r.body + "\"") + ", which lie from " +
                           point(candidates.lo) + " to " + point(candidates.hi));
+    }
+  }
+}
+
+// Contact pairs of a CaseSpec built in code may name their bodies without the indices: resolves them, and
+// checks what the case file reader checks (two distinct existing bodies, each pair once).
+void resolve_contacts(CaseSpec& spec) {
+  const int nb = static_cast<int>(spec.bodies.size());
+  for (std::size_t c = 0; c < spec.contacts.size(); ++c) {
+    ContactSpec& contact = spec.contacts[c];
+    const std::string key = "contacts[" + std::to_string(c) + "].bodies";
+    auto resolve = [&](int& index, std::string& name) {
+      if (index >= 0 && index < nb) {
+        name = spec.bodies[index].name;
+        return;
+      }
+      for (int k = 0; k < nb; ++k)
+        if (spec.bodies[k].name == name) {
+          index = k;
+          return;
+        }
+      std::string names;
+      for (const BodySpec& b : spec.bodies) names += (names.empty() ? "\"" : ", \"") + b.name + "\"";
+      throw CaseError(spec.source_file, contact.line, key, "no body named \"" + name + "\"; bodies: " + names);
+    };
+    resolve(contact.index_a, contact.body_a);
+    resolve(contact.index_b, contact.body_b);
+    if (contact.index_a == contact.index_b)
+      throw CaseError(spec.source_file, contact.line, key,
+                      "names \"" + contact.body_a + "\" twice; a contact is between two different bodies");
+    for (std::size_t j = 0; j < c; ++j) {
+      const ContactSpec& o = spec.contacts[j];
+      if ((o.index_a == contact.index_a && o.index_b == contact.index_b) ||
+          (o.index_a == contact.index_b && o.index_b == contact.index_a))
+        throw CaseError(spec.source_file, contact.line, key,
+                        "the pair \"" + contact.body_a + "\", \"" + contact.body_b + "\" is already listed in contacts[" +
+                            std::to_string(j) + "]; each pair is given once");
     }
   }
 }
@@ -327,17 +414,15 @@ void mark_fixed(const CaseSpec& spec, ParticleSet& ps, const std::vector<std::si
 Scene build_scene(const CaseSpec& spec) {
   const double dx = spec.numerics.spacing;
   if (!(dx > 0) || !std::isfinite(dx))
-    throw CaseError(spec.source_file, 0, "numerics.spacing", "must be greater than zero");
+    throw CaseError(spec.source_file, spec.numerics.spacing_line, "numerics.spacing", "must be greater than zero");
   if (spec.bodies.empty()) throw CaseError(spec.source_file, 0, "bodies", "the case has no bodies");
 
   Scene scene;
   scene.spec = spec;
   for (const MaterialSpec& m : spec.materials) scene.materials.push_back(m.params);
 
-  ParticleSet& ps = scene.particles;
-  std::vector<std::size_t> first{0};  // particles of body k are [first[k], first[k+1])
-  std::vector<Box3> bounds;            // bounding boxes of the bodies' particles
-  const double h = spec.numerics.h_factor * dx;
+  // Lattices first, so that the symmetry planes can be decided from every body and clip them.
+  std::vector<std::vector<Vec3d>> pts(spec.bodies.size());
   for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
     BodySpec& b = scene.spec.bodies[k];
     // A CaseSpec built in code may name its material without the index.
@@ -345,23 +430,33 @@ Scene build_scene(const CaseSpec& spec) {
       const auto it = std::find_if(spec.materials.begin(), spec.materials.end(),
                                    [&](const MaterialSpec& m) { return m.name == b.material; });
       if (it == spec.materials.end())
-        throw CaseError(spec.source_file, 0, body_key(k) + ".material", "no material named \"" + b.material + "\"");
+        throw CaseError(spec.source_file, b.line, body_key(k) + ".material", "no material named \"" + b.material + "\"");
       b.material_index = static_cast<int>(it - spec.materials.begin());
     }
-    const MaterialParams<double>& mat = spec.materials[b.material_index].params;
-    if (!(mat.eos.rho0 > 0))
-      throw CaseError(spec.source_file, 0, "materials." + b.material + ".density", "must be greater than zero");
+    const MaterialSpec& m = spec.materials[b.material_index];
+    if (!(m.params.eos.rho0 > 0))
+      throw CaseError(spec.source_file, m.line, "materials." + m.name + ".density", "must be greater than zero");
+    pts[k] = lattice(spec, k, dx);
+    if (pts[k].empty())
+      throw CaseError(spec.source_file, b.line, body_key(k), body_name(spec, k) + " holds no particle at this spacing");
+  }
+  clip_to_symmetry(scene.spec, pts, dx);
 
-    const std::vector<Vec3d> pts = lattice(spec, k, dx);
-    if (pts.empty())
-      throw CaseError(spec.source_file, 0, body_key(k), body_name(spec, k) + " holds no particle at this spacing");
+  ParticleSet& ps = scene.particles;
+  std::vector<std::size_t> first{0};  // particles of body k are [first[k], first[k+1])
+  std::vector<Box3> bounds;            // bounding boxes of the bodies' particles
+  const double h = spec.numerics.h_factor * dx;
+  for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
+    const BodySpec& b = scene.spec.bodies[k];
+    const MaterialParams<double>& mat = spec.materials[b.material_index].params;
     const double mass = mat.eos.rho0 * dx * dx * dx;
     const std::size_t n0 = ps.size();
-    ps.resize(n0 + pts.size());
-    Box3 box{pts[0], pts[0]};
-    for (std::size_t i = 0; i < pts.size(); ++i) {
+    ps.resize(n0 + pts[k].size());
+    Box3 box{pts[k][0], pts[k][0]};
+    for (std::size_t i = 0; i < pts[k].size(); ++i) {
+      const Vec3d& q = pts[k][i];
       const std::size_t p = n0 + i;
-      ps.pos[p] = pts[i];
+      ps.pos[p] = q;
       ps.vel[p] = b.velocity;
       ps.mass[p] = mass;
       ps.rho[p] = mat.eos.rho0;
@@ -375,7 +470,7 @@ Scene build_scene(const CaseSpec& spec) {
       ps.body[p] = static_cast<std::int32_t>(k);
       ps.material[p] = b.material_index;
       ps.fixed[p] = 0;
-      for (int a = 0; a < 3; ++a) box.lo[a] = std::min(box.lo[a], pts[i][a]), box.hi[a] = std::max(box.hi[a], pts[i][a]);
+      for (int a = 0; a < 3; ++a) box.lo[a] = std::min(box.lo[a], q[a]), box.hi[a] = std::max(box.hi[a], q[a]);
     }
     first.push_back(ps.size());
     bounds.push_back(box);
@@ -383,15 +478,15 @@ Scene build_scene(const CaseSpec& spec) {
     BodyInfo info;
     info.name = b.name;
     info.material = b.material_index;
-    info.particle_count = pts.size();
-    info.initial_mass = mass * double(pts.size());
+    info.particle_count = pts[k].size();  // after clipping by the symmetry planes
+    info.initial_mass = mass * double(pts[k].size());
     scene.bodies.push_back(info);
   }
   if (ps.size() == 0) throw CaseError(spec.source_file, 0, "bodies", "the case holds no particle");
 
   check_overlaps(scene.spec, ps, first, bounds, dx);
-  check_symmetry(scene.spec, first, bounds, dx);
   mark_fixed(scene.spec, ps, first, dx);
+  resolve_contacts(scene.spec);
   return scene;
 }
 

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -392,13 +394,20 @@ TEST(CaseFileErrors, UnknownKindsListValidOnes) {
   expect_error(t, "materials.copper.eos.kind", "did you mean \"mie-gruneisen\"?", line_of(t, "mie-grueneisen"));
   expect_error(t, "materials.copper.eos.kind", "\"linear\", \"polynomial\", \"mie-gruneisen\", \"gruneisen-cubic\"", -1);
   t = with("kind = \"elastic\"", "kind = \"plastic\"");
-  expect_error(t, "materials.steel.strength.kind", "\"hydrodynamic\", \"elastic\", \"perfectly-plastic\"", -1);
+  expect_error(t, "materials.steel.strength.kind",
+               "\"hydrodynamic\", \"elastic\", \"perfectly-plastic\", \"johnson-cook\"", -1);
   t = with("shape = \"box\"", "shape = \"sphere\"");
   expect_error(t, "bodies[0].shape", "valid: \"box\", \"cylinder\", \"disk\", \"plate\"", line_of(t, "sphere"));
   t = with("spacing = \"0.5 mm\"", "spacing = \"0.5 mm\"\nkernel = \"gaussian\"");
   expect_error(t, "numerics.kernel", "\"wendland-c2\", \"cubic-spline\"", -1);
-  t = with("specific_heat", "damage = { kind = \"johnson-cook\" }\nspecific_heat");
-  expect_error(t, "materials.copper.damage.kind", "valid: \"none\"", -1);
+  t = with("specific_heat", "damage = { kind = \"gurson\" }\nspecific_heat");
+  expect_error(t, "materials.copper.damage.kind",
+               "valid: \"none\", \"critical-plastic-strain\", \"johnson-cook\"", line_of(t, "gurson"));
+  t = with("kind = \"elastic\"", "kind = \"johnson_cook\"");
+  expect_error(t, "materials.steel.strength.kind", "did you mean \"johnson-cook\"?", -1);
+  t = kBase + "\n[[contacts]]\nbodies = [\"plate\", \"projectile\"]\nkind = \"penality\"\n";
+  expect_error(t, "contacts[0].kind", "did you mean \"penalty\"? valid: \"penalty\", \"shared\"",
+               line_of(t, "penality"));
 }
 
 TEST(CaseFileErrors, BodyNamesUnknownMaterial) {
@@ -646,5 +655,311 @@ TEST(CaseFileLoad, DocumentedExampleLoads) {
   EXPECT_EQ(s.name, "plate-impact-example");
   EXPECT_EQ(s.bodies.size(), 2u);
   EXPECT_EQ(s.fixed.size(), 1u);
+  EXPECT_EQ(s.symmetry.size(), 2u);
   EXPECT_NEAR(s.bodies[1].velocity.z, -298, 1e-12);
+  const auto& weldox = s.materials[0].params;
+  EXPECT_EQ(weldox.strength.kind, impactsph::StrengthKind::JohnsonCook);
+  EXPECT_DOUBLE_EQ(weldox.strength.jc_a, 490e6);
+  EXPECT_DOUBLE_EQ(weldox.strength.jc_b, 807e6);
+  EXPECT_DOUBLE_EQ(weldox.strength.reference_strain_rate, 5e-4);
+  EXPECT_DOUBLE_EQ(weldox.strength.melt_temperature, 0);  // F neglects thermal effects
+  EXPECT_EQ(weldox.damage.kind, impactsph::DamageKind::CriticalPlasticStrain);
+  EXPECT_DOUBLE_EQ(weldox.damage.critical_plastic_strain, 0.3);
+  ASSERT_EQ(s.contacts.size(), 1u);
+  EXPECT_EQ(s.contacts[0].kind, impactsph::ContactSpec::Kind::Penalty);
+  EXPECT_EQ(s.contacts[0].index_a, 1);
+  EXPECT_EQ(s.contacts[0].index_b, 0);
+}
+
+// The complete example of docs/case-files.md is the test data file, byte for byte.
+TEST(CaseFileLoad, DocumentedExampleMatchesTheDocs) {
+  auto read = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    EXPECT_TRUE(in.good()) << path;
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  const std::string docs = read(std::string(IMPACTSPH_TEST_DATA) + "/../../docs/case-files.md");
+  const auto section = docs.find("## Complete example");
+  ASSERT_NE(section, std::string::npos);
+  const auto open = docs.find("```toml\n", section);
+  ASSERT_NE(open, std::string::npos);
+  const auto begin = open + 8;
+  const auto end = docs.find("```", begin);
+  ASSERT_NE(end, std::string::npos);
+  EXPECT_EQ(docs.substr(begin, end - begin), read(std::string(IMPACTSPH_TEST_DATA) + "/example_plate_impact.toml"));
+}
+
+// ---- Johnson-Cook strength, damage models, contacts, source lines ----
+
+namespace {
+
+// kBase with the copper strength replaced by `strength` (an inline table's contents) and `extra` lines
+// added to the copper material.
+std::string copper(const std::string& strength, const std::string& extra = "") {
+  return with("strength = { kind = \"perfectly-plastic\", youngs_modulus = \"124 GPa\", poisson_ratio = 0.34, "
+              "yield_stress = \"90 MPa\" }",
+              "strength = { " + strength + " }" + (extra.empty() ? "" : "\n" + extra));
+}
+
+const std::string kJc = "kind = \"johnson-cook\", youngs_modulus = \"124 GPa\", poisson_ratio = 0.34, a = \"90 MPa\", "
+                        "b = \"292 MPa\", n = 0.31";
+
+}  // namespace
+
+TEST(CaseFileMaterials, JohnsonCookStrength) {
+  CaseSpec s = parse_case_string(
+      copper(kJc + ", c = 0.025, m = 1.09, reference_strain_rate = \"1e-3 /s\", melt_temperature = \"1356 K\", "
+                   "taylor_quinney = 0.85"),
+      "case.toml");
+  const auto& st = s.materials[1].params.strength;
+  EXPECT_EQ(st.kind, impactsph::StrengthKind::JohnsonCook);
+  EXPECT_NEAR(st.shear_modulus, 124e9 / (2 * 1.34), 1);
+  EXPECT_DOUBLE_EQ(st.jc_a, 90e6);
+  EXPECT_DOUBLE_EQ(st.jc_b, 292e6);
+  EXPECT_DOUBLE_EQ(st.jc_n, 0.31);
+  EXPECT_DOUBLE_EQ(st.jc_c, 0.025);
+  EXPECT_DOUBLE_EQ(st.jc_m, 1.09);
+  EXPECT_DOUBLE_EQ(st.reference_strain_rate, 1e-3);
+  EXPECT_DOUBLE_EQ(st.melt_temperature, 1356);
+  EXPECT_DOUBLE_EQ(st.taylor_quinney, 0.85);
+  EXPECT_DOUBLE_EQ(s.materials[1].params.specific_heat, 383);
+
+  // Defaults; a linear EOS from E and nu works as for the other strength kinds; shear_modulus directly.
+  s = parse_case_string(copper("kind = \"johnson-cook\", shear_modulus = \"46 GPa\", a = \"90 MPa\", b = 0"), "case.toml");
+  const auto& d = s.materials[1].params.strength;
+  EXPECT_DOUBLE_EQ(d.shear_modulus, 46e9);
+  EXPECT_DOUBLE_EQ(d.jc_b, 0);
+  EXPECT_DOUBLE_EQ(d.jc_n, 1);  // not needed without hardening
+  EXPECT_DOUBLE_EQ(d.jc_c, 0);
+  EXPECT_DOUBLE_EQ(d.jc_m, 1);
+  EXPECT_DOUBLE_EQ(d.reference_strain_rate, 1);
+  EXPECT_DOUBLE_EQ(d.melt_temperature, 0);  // no thermal softening
+  EXPECT_DOUBLE_EQ(d.taylor_quinney, 0.9);
+
+  // Without melt_temperature no specific heat is needed.
+  const std::string no_cp = with("specific_heat = \"383 J/(kg K)\"\n", "", copper(kJc));
+  EXPECT_NO_THROW(parse_case_string(no_cp, "case.toml"));
+}
+
+TEST(CaseFileMaterials, JohnsonCookErrors) {
+  struct Case {
+    std::string strength, key, hint;
+  };
+  const std::string k = "materials.copper.strength.";
+  const std::vector<Case> cases = {
+      {kJc + ", a = 0", k + "a", "at least 100 kPa"},
+      {"kind = \"johnson-cook\", shear_modulus = \"46 GPa\", a = 490, b = 0", k + "a", "a bare number is in Pa"},
+      {kJc + ", b = \"-1 MPa\"", k + "b", "b = 0 means no strain hardening"},
+      {kJc + ", n = 0", k + "n", "greater than 0"},
+      {kJc + ", n = 2.5", k + "n", "at most 2"},
+      {kJc + ", c = -0.1", k + "c", "at least 0"},
+      {kJc + ", c = 1.5", k + "c", "at most 1"},
+      {kJc + ", m = 0", k + "m", "greater than 0"},
+      {kJc + ", m = 6", k + "m", "at most 5"},
+      {kJc + ", reference_strain_rate = 0", k + "reference_strain_rate", "greater than zero"},
+      {kJc + ", reference_strain_rate = \"1 m/s\"", k + "reference_strain_rate", "is a velocity; expected a strain rate"},
+      {kJc + ", taylor_quinney = 1.2", k + "taylor_quinney", "at most 1"},
+      {kJc + ", melt_temperature = \"200 K\"", k + "melt_temperature", "above room_temperature = 293 K"},
+      {kJc + ", melt_temperature = \"-5 K\"", k + "melt_temperature", "greater than zero"},
+      {kJc + ", yield_stress = \"90 MPa\"", k + "yield_stress", "unknown key"},
+      {kJc + ", shear_modulus = \"46 GPa\"", k + "youngs_modulus", "not both"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.strength);
+    // Keys given twice in an inline table are invalid TOML, so replace the default ones.
+    std::string strength = c.strength;
+    for (const std::string key : {"a", "b", "n"}) {
+      const std::string given = ", " + key + " = ";
+      const auto first = strength.find(given), last = strength.rfind(given);
+      if (first != last) strength.erase(first, strength.find(',', first + 1) - first);
+    }
+    const std::string t = copper(strength);
+    expect_error(t, c.key, c.hint, line_of(t, "kind = \"johnson-cook\""));
+  }
+
+  // Required constants.
+  std::string t = copper("kind = \"johnson-cook\", shear_modulus = \"46 GPa\", b = \"292 MPa\", n = 0.3");
+  expect_error(t, "materials.copper.strength.a", "missing in the strength model", -1);
+  t = copper("kind = \"johnson-cook\", shear_modulus = \"46 GPa\", a = \"90 MPa\", n = 0.3");
+  expect_error(t, "materials.copper.strength.b", "missing", -1);
+  t = copper("kind = \"johnson-cook\", shear_modulus = \"46 GPa\", a = \"90 MPa\", b = \"292 MPa\"");
+  expect_error(t, "materials.copper.strength.n", "missing", -1);
+  t = copper("kind = \"johnson-cook\", a = \"90 MPa\", b = 0");
+  expect_error(t, "materials.copper.strength.shear_modulus", "youngs_modulus", -1);
+
+  // Thermal softening heats the material, which needs c_p; the room temperature is the material's.
+  t = with("specific_heat = \"383 J/(kg K)\"\n", "", copper(kJc + ", melt_temperature = \"1356 K\""));
+  expect_error(t, "materials.copper.specific_heat", "needs the temperature", line_of(t, "[materials.copper]"));
+  t = copper(kJc + ", melt_temperature = \"1356 K\"", "room_temperature = \"1400 K\"");
+  expect_error(t, "materials.copper.strength.melt_temperature", "above room_temperature = 1400 K", -1);
+}
+
+TEST(CaseFileMaterials, DamageModels) {
+  CaseSpec s = parse_case_string(
+      copper(kJc, "damage = { kind = \"critical-plastic-strain\", critical_plastic_strain = 0.3 }"), "case.toml");
+  EXPECT_EQ(s.materials[1].params.damage.kind, impactsph::DamageKind::CriticalPlasticStrain);
+  EXPECT_DOUBLE_EQ(s.materials[1].params.damage.critical_plastic_strain, 0.3);
+  EXPECT_EQ(s.materials[0].params.damage.kind, impactsph::DamageKind::None);
+
+  // Johnson-Cook failure on a perfectly plastic material; d4, d5 and min_failure_strain default to 0.
+  std::string t = with("specific_heat", "damage = { kind = \"johnson-cook\", d1 = -0.09, d2 = 0.25, d3 = -0.5 }\nspecific_heat");
+  s = parse_case_string(t, "case.toml");
+  const auto& d = s.materials[1].params.damage;
+  EXPECT_EQ(d.kind, impactsph::DamageKind::JohnsonCook);
+  EXPECT_DOUBLE_EQ(d.d1, -0.09);
+  EXPECT_DOUBLE_EQ(d.d2, 0.25);
+  EXPECT_DOUBLE_EQ(d.d3, -0.5);
+  EXPECT_DOUBLE_EQ(d.d4, 0);
+  EXPECT_DOUBLE_EQ(d.d5, 0);
+  EXPECT_DOUBLE_EQ(d.min_failure_strain, 0);
+
+  t = copper(kJc, "damage = { kind = \"johnson-cook\", d1 = 0.54, d2 = 4.89, d3 = -3.03, d4 = 0.014, d5 = 1.12, "
+                  "min_failure_strain = 0.05 }");
+  s = parse_case_string(t, "case.toml");
+  const auto& e = s.materials[1].params.damage;
+  EXPECT_DOUBLE_EQ(e.d1, 0.54);
+  EXPECT_DOUBLE_EQ(e.d2, 4.89);
+  EXPECT_DOUBLE_EQ(e.d3, -3.03);
+  EXPECT_DOUBLE_EQ(e.d4, 0.014);
+  EXPECT_DOUBLE_EQ(e.d5, 1.12);
+  EXPECT_DOUBLE_EQ(e.min_failure_strain, 0.05);
+}
+
+TEST(CaseFileMaterials, DamageErrors) {
+  struct Case {
+    std::string damage, key, hint;
+  };
+  const std::string k = "materials.copper.damage.";
+  const std::string jc = "kind = \"johnson-cook\", ";
+  const std::vector<Case> cases = {
+      {"kind = \"critical-plastic-strain\", critical_plastic_strain = 0", k + "critical_plastic_strain", "greater than 0"},
+      {"kind = \"critical-plastic-strain\", critical_plastic_strain = 11", k + "critical_plastic_strain", "at most 10"},
+      {"kind = \"critical-plastic-strain\"", k + "critical_plastic_strain", "missing in the damage model"},
+      {"kind = \"critical-plastic-strain\", critical_plastic_strain = 0.3, d1 = 1", k + "d1", "unknown key"},
+      {jc + "d1 = -1.5, d2 = 1, d3 = -1", k + "d1", "at least -1"},
+      {jc + "d1 = 21, d2 = 1, d3 = -1", k + "d1", "at most 20"},
+      {jc + "d1 = 0.1, d2 = -0.1, d3 = -1", k + "d2", "at least 0"},
+      {jc + "d1 = 0.1, d2 = 1, d3 = -25", k + "d3", "at least -20"},
+      {jc + "d1 = 0.1, d2 = 1, d3 = -1, d4 = 30", k + "d4", "at most 20"},
+      {jc + "d1 = 0.1, d2 = 1, d3 = -1, d5 = -30", k + "d5", "at least -20"},
+      {jc + "d1 = 0.1, d2 = 1, d3 = -1, min_failure_strain = -0.1", k + "min_failure_strain", "at least 0"},
+      {jc + "d2 = 1, d3 = -1", k + "d1", "missing in the damage model"},
+      {jc + "d1 = 0.1, d2 = 1, d3 = -1, critical_plastic_strain = 0.3", k + "critical_plastic_strain", "unknown key"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.damage);
+    const std::string t = with("specific_heat", "damage = { " + c.damage + " }\nspecific_heat");
+    expect_error(t, c.key, c.hint, line_of(t, "damage = {"));
+  }
+
+  // Damage accumulates plastic strain: an elastic or hydrodynamic material cannot have it.
+  std::string t = with("strength = { kind = \"elastic\", shear_modulus = \"80 GPa\" }",
+                       "strength = { kind = \"elastic\", shear_modulus = \"80 GPa\" }\n"
+                       "damage = { kind = \"critical-plastic-strain\", critical_plastic_strain = 0.5 }");
+  expect_error(t, "materials.steel.damage.kind", "the strength kind \"elastic\" has no plasticity",
+               line_of(t, "damage = {"));
+  t = with("strength = { kind = \"elastic\", shear_modulus = \"80 GPa\" }",
+           "strength = { kind = \"hydrodynamic\" }\ndamage = { kind = \"johnson-cook\", d1 = 0.1, d2 = 1, d3 = -1 }");
+  expect_error(t, "materials.steel.damage.kind", "use strength kind \"johnson-cook\" or \"perfectly-plastic\"", -1);
+}
+
+TEST(CaseFileContacts, ReadsPairs) {
+  const std::string t = kBase + R"(
+[[contacts]]
+bodies = ["projectile", "plate"]
+
+[[contacts]]
+bodies = ["plate", "anvil"]
+kind = "shared"
+
+[[contacts]]
+bodies = ["anvil", "projectile"]
+kind = "penalty"
+penalty_scale = 0.5
+contact_distance = 1.5
+)";
+  const std::string anvil = with("[numerics]", "[[bodies]]\nname = \"anvil\"\nmaterial = \"steel\"\nshape = \"box\"\n"
+                                               "min = [\"0 mm\", \"0 mm\", \"-2 mm\"]\nmax = [\"10 mm\", \"10 mm\", \"0 mm\"]\n\n[numerics]",
+                                 t);
+  const CaseSpec s = parse_case_string(anvil, "case.toml");
+  ASSERT_EQ(s.contacts.size(), 3u);
+  const auto& a = s.contacts[0];
+  EXPECT_EQ(a.kind, impactsph::ContactSpec::Kind::Penalty);  // the default kind of a listed pair
+  EXPECT_EQ(a.body_a, "projectile");
+  EXPECT_EQ(a.body_b, "plate");
+  EXPECT_EQ(a.index_a, 1);
+  EXPECT_EQ(a.index_b, 0);
+  EXPECT_DOUBLE_EQ(a.penalty_scale, 0.3);
+  EXPECT_DOUBLE_EQ(a.contact_distance, 1.0);
+  EXPECT_EQ(a.line, line_of(anvil, "[[contacts]]"));
+  EXPECT_EQ(s.contacts[1].kind, impactsph::ContactSpec::Kind::Shared);
+  EXPECT_EQ(s.contacts[1].index_b, 2);
+  EXPECT_DOUBLE_EQ(s.contacts[2].penalty_scale, 0.5);
+  EXPECT_DOUBLE_EQ(s.contacts[2].contact_distance, 1.5);
+  EXPECT_EQ(s.contacts[2].index_a, 2);
+  EXPECT_EQ(s.contacts[2].index_b, 1);
+  EXPECT_TRUE(parse_case_string(kBase, "case.toml").contacts.empty());
+}
+
+TEST(CaseFileContacts, Errors) {
+  auto contact = [](const std::string& body) { return kBase + "\n[[contacts]]\n" + body + "\n"; };
+  std::string t = contact("bodies = [\"projectile\", \"plat\"]");
+  expect_error(t, "contacts[0].bodies[1]", "no body named \"plat\"; did you mean \"plate\"?", line_of(t, "bodies = ["));
+  expect_error(t, "contacts[0].bodies[1]", "bodies: \"plate\", \"projectile\"", -1);
+  t = contact("bodies = [\"plate\", \"plate\"]");
+  expect_error(t, "contacts[0].bodies", "names \"plate\" twice", line_of(t, "bodies = ["));
+  t = contact("bodies = [\"plate\", \"projectile\"]\n[[contacts]]\nbodies = [\"projectile\", \"plate\"]\nkind = \"shared\"");
+  expect_error(t, "contacts[1].bodies", "already listed in contacts[0]", line_of(t, "bodies = [\"projectile\""));
+  t = contact("bodies = [\"plate\", \"projectile\"]\nkind = \"glue\"");
+  expect_error(t, "contacts[0].kind", "valid: \"penalty\", \"shared\"", line_of(t, "glue"));
+  t = contact("bodies = [\"plate\", \"projectile\"]\npenalty_scale = 0");
+  expect_error(t, "contacts[0].penalty_scale", "greater than 0", -1);
+  t = contact("bodies = [\"plate\", \"projectile\"]\npenalty_scale = 11");
+  expect_error(t, "contacts[0].penalty_scale", "at most 10", -1);
+  t = contact("bodies = [\"plate\", \"projectile\"]\ncontact_distance = 0.4");
+  expect_error(t, "contacts[0].contact_distance", "at least 0.5", -1);
+  t = contact("bodies = [\"plate\", \"projectile\"]\ncontact_distance = 3.5");
+  expect_error(t, "contacts[0].contact_distance", "at most 3", -1);
+  t = contact("bodies = [\"plate\", \"projectile\"]\nkind = \"shared\"\npenalty_scale = 0.3");
+  expect_error(t, "contacts[0].penalty_scale", "unknown key \"penalty_scale\" in a contact", -1);
+  t = contact("bodies = [\"plate\", \"projectile\"]\npenalty_scal = 0.3");
+  expect_error(t, "contacts[0].penalty_scal", "did you mean \"penalty_scale\"?", -1);
+  t = contact("bodies = [\"plate\", \"projectile\", \"plate\"]");
+  expect_error(t, "contacts[0].bodies", "has 3 entries; expected two body names", -1);
+  t = contact("bodies = \"plate\"");
+  expect_error(t, "contacts[0].bodies", "expected an array of two body names", -1);
+  t = contact("bodies = [\"plate\", 2]");
+  expect_error(t, "contacts[0].bodies[1]", "expected a string", -1);
+  t = contact("kind = \"penalty\"");
+  expect_error(t, "contacts[0].bodies", "missing in a contact", line_of(t, "[[contacts]]"));
+  t = "contacts = 3\n" + kBase;
+  expect_error(t, "contacts", "expected an array of tables", -1);
+}
+
+TEST(CaseFile, SourceLinesOfTables) {
+  const std::string t = kBase + R"(
+[[boundaries.fixed]]
+region = "box"
+min = [0, 0, 0]
+max = [0.001, 0.01, 0.002]
+
+[[boundaries.symmetry]]
+axis = "x"
+
+[[contacts]]
+bodies = ["plate", "projectile"]
+)";
+  const CaseSpec s = parse_case_string(t, "case.toml");
+  EXPECT_EQ(s.materials[0].line, line_of(t, "[materials.steel]"));
+  EXPECT_EQ(s.materials[1].line, line_of(t, "[materials.copper]"));
+  EXPECT_EQ(s.bodies[0].line, line_of(t, "[[bodies]]"));
+  EXPECT_EQ(s.bodies[1].line, line_of(t, "[[bodies]]\nname = \"projectile\""));
+  EXPECT_EQ(s.fixed[0].line, line_of(t, "[[boundaries.fixed]]"));
+  EXPECT_EQ(s.symmetry[0].line, line_of(t, "[[boundaries.symmetry]]"));
+  EXPECT_EQ(s.contacts[0].line, line_of(t, "[[contacts]]"));
+  EXPECT_EQ(s.numerics.spacing_line, line_of(t, "spacing = "));
+  // A value from an override has no line.
+  EXPECT_EQ(parse_case_string(t, "case.toml", {}, "1 mm").numerics.spacing_line, 0);
 }

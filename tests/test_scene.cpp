@@ -245,17 +245,132 @@ TEST(SceneErrors, SymmetryPlanes) {
   s.bodies[0] = box("below", {0, -4 * dx, 0}, {4 * dx, 0, 4 * dx});  // either side will do
   EXPECT_NO_THROW(build_scene(s));
 
-  s.bodies[0] = box("whole", {0, -2 * dx, 0}, {4 * dx, 2 * dx, 4 * dx});
-  CaseError e = scene_error(s);
-  EXPECT_EQ(e.key(), "bodies[0]");
-  EXPECT_TRUE(Contains(e.what(), "\"whole\" reaches across the symmetry plane y = 0 mm"));
-  EXPECT_TRUE(Contains(e.what(), "boundaries.symmetry[0]"));
-
+  // A body across the plane is clipped (below); bodies wholly on both sides are an error.
   s.bodies[0] = box("above", {0, 1 * dx, 0}, {4 * dx, 4 * dx, 4 * dx});
   s.bodies.push_back(box("below", {0, -4 * dx, 0}, {4 * dx, -1 * dx, 4 * dx}));
-  e = scene_error(s);
+  s.bodies[1].line = 17;
+  CaseError e = scene_error(s);
   EXPECT_EQ(e.key(), "bodies[1]");
+  EXPECT_EQ(e.line(), 17);
   EXPECT_TRUE(Contains(e.what(), "other side of the symmetry plane y = 0 mm (boundaries.symmetry[0]) from bodies[0]"));
+
+  // Also when a body across the plane lies between them: the first body wholly on one side decides.
+  s.bodies.insert(s.bodies.begin(), box("across", {5 * dx, -2 * dx, 0}, {9 * dx, 2 * dx, 4 * dx}));
+  e = scene_error(s);
+  EXPECT_EQ(e.key(), "bodies[2]");
+  EXPECT_TRUE(Contains(e.what(), "from bodies[1] (\"above\")"));
+}
+
+TEST(Scene, BodyAcrossAPlaneIsClipped) {
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  s.symmetry.push_back({1, 0.0});
+  s.bodies.push_back(box("whole", {0, -2 * dx, 0}, {4 * dx, 2 * dx, 4 * dx}));
+  Scene scene = build_scene(s);
+  ASSERT_EQ(scene.particles.size(), 32u);  // half of 4 x 4 x 4
+  EXPECT_EQ(scene.bodies[0].particle_count, 32u);
+  EXPECT_NEAR(scene.bodies[0].initial_mass, 32 * kRho * dx * dx * dx, 1e-15);
+  for (const Vec3d& q : scene.particles.pos) EXPECT_GT(q.y, 0);  // centred on the plane: the positive side
+  // Lattice order is kept: the first particle is the first of the whole box with y > 0.
+  expect_near_vec(scene.particles.pos[0], {0.5 * dx, 0.5 * dx, 0.5 * dx}, 1e-15);
+  expect_near_vec(scene.particles.pos[4], {0.5 * dx, 1.5 * dx, 0.5 * dx}, 1e-15);
+
+  // Most of the body below the plane: the negative side.
+  s.bodies[0] = box("low", {0, -6 * dx, 0}, {4 * dx, 2 * dx, 4 * dx});
+  scene = build_scene(s);
+  EXPECT_EQ(scene.particles.size(), 96u);
+  for (const Vec3d& q : scene.particles.pos) EXPECT_LT(q.y, 0);
+
+  // A body wholly on one side decides, even against the majority of a body across the plane.
+  s.bodies.push_back(box("above", {5 * dx, 0, 0}, {9 * dx, 2 * dx, 4 * dx}));
+  scene = build_scene(s);
+  EXPECT_EQ(scene.bodies[0].particle_count, 32u);
+  EXPECT_EQ(scene.bodies[1].particle_count, 32u);
+  for (const Vec3d& q : scene.particles.pos) EXPECT_GT(q.y, 0);
+}
+
+TEST(Scene, QuarterCylinder) {
+  const double dx = 0.5e-3, r = 10e-3, len = 4e-3;
+  for (int axis = 0; axis < 3; ++axis) {
+    SCOPED_TRACE(axis);
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const Vec3d base{1e-3, -2e-3, 3e-3};
+    CaseSpec s = spec_with_spacing(dx);
+    s.bodies.push_back(cylinder("rod", base, axis, r, len));
+    const Scene whole = build_scene(s);
+    s.symmetry.push_back({u, base[u]});
+    s.symmetry.push_back({v, base[v]});
+    const Scene quarter = build_scene(s);
+    ASSERT_GT(whole.particles.size(), 0u);
+    EXPECT_EQ(whole.particles.size() % 4, 0u);
+    EXPECT_EQ(quarter.particles.size() * 4, whole.particles.size());
+    EXPECT_EQ(quarter.bodies[0].particle_count * 4, whole.bodies[0].particle_count);
+    EXPECT_NEAR(quarter.bodies[0].initial_mass * 4, whole.bodies[0].initial_mass, 1e-12 * whole.bodies[0].initial_mass);
+    const double eps = 1e-9 * dx;
+    double du_min = 1, dv_min = 1;
+    for (const Vec3d& q : quarter.particles.pos) {
+      const double du = q[u] - base[u], dv = q[v] - base[v];
+      EXPECT_GT(du, 0.5 * dx - eps);  // no particle within dx/2 - eps of a plane, every one on the + side
+      EXPECT_GT(dv, 0.5 * dx - eps);
+      du_min = std::min(du_min, du);
+      dv_min = std::min(dv_min, dv);
+    }
+    EXPECT_NEAR(du_min, 0.5 * dx, eps);  // the layer next to each plane is dx/2 from it
+    EXPECT_NEAR(dv_min, 0.5 * dx, eps);
+  }
+}
+
+TEST(Scene, HalfCylinderOnTheNegativeSide) {
+  // A plate wholly below z = 0 decides the side of the plane for a cylinder lying across it.
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  s.bodies.push_back(cylinder("rod", {0, 0, -3 * dx}, 0, 3 * dx, 6 * dx));  // along x, axis in z = -3 dx
+  s.bodies.push_back(box("plate", {0, -10 * dx, -20 * dx}, {6 * dx, 10 * dx, -10 * dx}));
+  const std::size_t whole = build_scene(s).bodies[0].particle_count;
+  s.symmetry.push_back({2, -3 * dx});
+  const Scene half = build_scene(s);
+  EXPECT_EQ(half.bodies[0].particle_count * 2, whole);
+  for (std::size_t i = 0; i < half.particles.size(); ++i) EXPECT_LT(half.particles.pos[i].z, -3.4 * dx);
+}
+
+TEST(SceneErrors, ClippingErrors) {
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  s.symmetry.push_back({1, 0.0});
+  // A lattice layer on the plane: its particles would coincide with their mirror images.
+  s.bodies.push_back(box("odd", {0, -1.5 * dx, 0}, {4 * dx, 1.5 * dx, 4 * dx}));
+  s.bodies[0].line = 9;
+  CaseError e = scene_error(s);
+  EXPECT_EQ(e.key(), "bodies[0]");
+  EXPECT_EQ(e.line(), 9);
+  EXPECT_TRUE(Contains(e.what(), "is 0 mm from the symmetry plane y = 0 mm (boundaries.symmetry[0])"));
+  EXPECT_TRUE(Contains(e.what(), "closer than half the spacing (0.5 mm) to its own mirror image"));
+
+  // A cylinder whose axis is 0.4 dx off the plane keeps particles 0.1 dx from it; 0.2 dx off is fine
+  // (0.3 dx: the mirror images are 0.6 dx away).
+  s.bodies[0] = cylinder("rod", {0, -0.4 * dx, 0}, 2, 3 * dx, 4 * dx);
+  e = scene_error(s);
+  EXPECT_TRUE(Contains(e.what(), "is 100 um from the symmetry plane"));
+  s.bodies[0] = cylinder("rod", {0, -0.2 * dx, 0}, 2, 3 * dx, 4 * dx);
+  EXPECT_NO_THROW(build_scene(s));
+  // The same holds for a body wholly on one side.
+  s.bodies[0] = box("near", {0, -0.3 * dx, 0}, {4 * dx, 2.7 * dx, 4 * dx});  // lattice from y = 0.2 dx
+  e = scene_error(s);
+  EXPECT_TRUE(Contains(e.what(), "is 0.2 mm from the symmetry plane"));
+
+  // Clipped to nothing: a disc across x = 0 and y = 0 whose lattice misses the quadrant x > 0, y > 0
+  // (offsets (i + 1/2) dx from (-2, -2) dx within 3 dx reach x = 0.5 dx and y = 0.5 dx, never both).
+  s = spec_with_spacing(dx);
+  s.symmetry.push_back({0, 0.0});
+  s.symmetry.push_back({1, 0.0});
+  s.bodies.push_back(cylinder("disc", {-2 * dx, -2 * dx, 0}, 2, 3 * dx, 2 * dx));
+  s.bodies.push_back(box("block", {2 * dx, 2 * dx, 0}, {6 * dx, 6 * dx, 2 * dx}));
+  s.bodies[0].line = 4;
+  e = scene_error(s);
+  EXPECT_EQ(e.key(), "bodies[0]");
+  EXPECT_EQ(e.line(), 4);
+  EXPECT_TRUE(Contains(e.what(), "\"disc\" would be clipped to nothing"));
+  EXPECT_TRUE(Contains(e.what(), "(x > 0 mm, y > 0 mm)"));
 }
 
 TEST(Scene, TwoSymmetryPlanesBoundAChannel) {
@@ -349,7 +464,7 @@ TEST(SceneErrors, MaterialsAndEmptyCases) {
 }
 
 TEST(Scene, FromTheDocumentedExample) {
-  // The example of docs/case-files.md at a coarse spacing, to stay fast.
+  // The example of docs/case-files.md at a coarse spacing, to stay fast: a quarter model.
   const CaseSpec spec =
       load_case_file(std::string(IMPACTSPH_TEST_DATA) + "/example_plate_impact.toml", {}, "2 mm");
   const Scene scene = build_scene(spec);
@@ -357,8 +472,19 @@ TEST(Scene, FromTheDocumentedExample) {
   EXPECT_EQ(scene.bodies[0].name, "plate");
   EXPECT_EQ(scene.bodies[1].name, "projectile");
   EXPECT_EQ(scene.bodies[1].material, 1);
-  // 197 g projectile (F section 6): within the lattice's discretisation of the circle.
-  EXPECT_NEAR(scene.bodies[1].initial_mass, 0.197, 0.197 * 0.05);
+  // A quarter of the 197 g projectile (F section 6): within the lattice's discretisation of the circle.
+  EXPECT_NEAR(scene.bodies[1].initial_mass, 0.197 / 4, 0.197 / 4 * 0.05);
+  CaseSpec whole_spec = spec;
+  whole_spec.symmetry.clear();
+  const Scene whole = build_scene(whole_spec);
+  EXPECT_EQ(scene.bodies[0].particle_count * 4, whole.bodies[0].particle_count);
+  EXPECT_EQ(scene.bodies[1].particle_count * 4, whole.bodies[1].particle_count);
+  for (const Vec3d& q : scene.particles.pos) {
+    EXPECT_GT(q.x, 0);
+    EXPECT_GT(q.y, 0);
+  }
+  ASSERT_EQ(scene.spec.contacts.size(), 1u);
+  EXPECT_EQ(scene.spec.contacts[0].index_a, 1);
   std::size_t fixed = 0;
   for (std::size_t i = 0; i < scene.particles.size(); ++i) {
     fixed += scene.particles.fixed[i];
@@ -369,4 +495,110 @@ TEST(Scene, FromTheDocumentedExample) {
   EXPECT_GT(fixed, 0u);
   EXPECT_DOUBLE_EQ(scene.particles.vel.back().z, -298);
   EXPECT_DOUBLE_EQ(scene.particles.h[0], 1.2 * 2e-3);
+}
+
+TEST(SceneErrors, GeometryErrorsNameTheBodysLine) {
+  const std::string toml = R"([case]
+name = "lines"
+
+[materials.steel]
+density = "7850 kg/m^3"
+eos = { kind = "linear", bulk_modulus = "160 GPa" }
+strength = { kind = "elastic", shear_modulus = "80 GPa" }
+
+[[bodies]]
+name = "plate"
+material = "steel"
+shape = "box"
+min = ["0 mm", "0 mm", "0 mm"]
+max = ["10 mm", "10 mm", "4 mm"]
+
+[[bodies]]
+name = "projectile"
+material = "steel"
+shape = "cylinder"
+base = ["5 mm", "5 mm", "2 mm"]
+axis = "z"
+radius = "2 mm"
+length = "6 mm"
+
+[[boundaries.fixed]]
+region = "box"
+min = ["50 mm", "0 mm", "0 mm"]
+max = ["60 mm", "1 mm", "1 mm"]
+
+[numerics]
+spacing = "1 mm"
+
+[time]
+end = "20 us"
+output_interval = "1 us"
+)";
+  auto error = [](const std::string& text) {
+    try {
+      build_scene(parse_case_string(text, "lines.toml"));
+    } catch (const CaseError& e) {
+      return e;
+    }
+    ADD_FAILURE() << "accepted";
+    return CaseError("", 0, "", "");
+  };
+  // Overlap: the later body, at the line of its [[bodies]].
+  CaseError e = error(toml);
+  EXPECT_EQ(e.key(), "bodies[1]");
+  EXPECT_EQ(e.line(), 16);
+  EXPECT_TRUE(Contains(e.what(), "lines.toml:16: bodies[1]: \"projectile\" overlaps"));
+
+  // A thin body.
+  std::string t = toml;
+  t.replace(t.find("radius = \"2 mm\""), 15, "radius = \"0.4 mm\"");
+  t.replace(t.find("\"2 mm\"]"), 6, "\"4 mm\"");
+  e = error(t);
+  EXPECT_EQ(e.key(), "bodies[1]");
+  EXPECT_EQ(e.line(), 16);
+  EXPECT_TRUE(Contains(e.what(), "diameter of 0.8 mm"));
+  t = toml;
+  t.replace(t.find("\"4 mm\"]"), 6, "\"1.5 mm\"");
+  e = error(t);
+  EXPECT_EQ(e.key(), "bodies[0]");
+  EXPECT_EQ(e.line(), 9);
+  EXPECT_TRUE(Contains(e.what(), "thick along z"));
+
+  // A fixed region that selects nothing, at the line of its [[boundaries.fixed]].
+  t = toml;
+  t.replace(t.find("\"2 mm\"]"), 6, "\"4 mm\"");
+  e = error(t);
+  EXPECT_EQ(e.key(), "boundaries.fixed[0]");
+  EXPECT_EQ(e.line(), 25);
+}
+
+TEST(Scene, ContactsBuiltInCodeAreResolved) {
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  s.bodies.push_back(box("plate", {0, 0, 0}, {10 * dx, 10 * dx, 4 * dx}));
+  s.bodies.push_back(box("block", {0, 0, 5 * dx}, {4 * dx, 4 * dx, 9 * dx}));
+  ContactSpec c;
+  c.body_a = "block";
+  c.body_b = "plate";
+  c.line = 30;
+  s.contacts.push_back(c);
+  Scene scene = build_scene(s);
+  EXPECT_EQ(scene.spec.contacts[0].index_a, 1);
+  EXPECT_EQ(scene.spec.contacts[0].index_b, 0);
+
+  s.contacts.push_back(c);
+  std::swap(s.contacts[1].body_a, s.contacts[1].body_b);
+  CaseError e = scene_error(s);
+  EXPECT_EQ(e.key(), "contacts[1].bodies");
+  EXPECT_EQ(e.line(), 30);
+  EXPECT_TRUE(Contains(e.what(), "already listed in contacts[0]"));
+
+  s.contacts.pop_back();
+  s.contacts[0].body_b = "block";
+  e = scene_error(s);
+  EXPECT_TRUE(Contains(e.what(), "names \"block\" twice"));
+  s.contacts[0].body_b = "anvil";
+  e = scene_error(s);
+  EXPECT_EQ(e.key(), "contacts[0].bodies");
+  EXPECT_TRUE(Contains(e.what(), "no body named \"anvil\""));
 }

@@ -86,10 +86,35 @@ TEST(Units, ThermalQuantities) {
   expect_si("0.3", Dimension::Dimensionless, 0.3);
 }
 
+TEST(Units, StrainRates) {
+  expect_si("1 /s", Dimension::StrainRate, 1);
+  expect_si("1/s", Dimension::StrainRate, 1);
+  expect_si("5e-4 /s", Dimension::StrainRate, 5e-4);
+  expect_si("5e-4/s", Dimension::StrainRate, 5e-4);
+  expect_si("0.001 1/s", Dimension::StrainRate, 1e-3);
+  expect_si("2 s^-1", Dimension::StrainRate, 2);
+  expect_si("2 1/ms", Dimension::StrainRate, 2e3);
+  expect_si("3 /us", Dimension::StrainRate, 3e6);
+  expect_si("4 1/(ms)", Dimension::StrainRate, 4e3);
+  expect_si("0.5", Dimension::StrainRate, 0.5);  // bare: 1/s
+  EXPECT_EQ(impactsph::dimension_name(Dimension::StrainRate), "strain rate");
+  EXPECT_TRUE(Contains(impactsph::dimension_units(Dimension::StrainRate), "s^-1"));
+  EXPECT_EQ(impactsph::format_quantity(5e-4, Dimension::StrainRate), "0.0005 /s");
+
+  EXPECT_TRUE(Contains(error_of("1 m/s", Dimension::StrainRate), "is a velocity; expected a strain rate such as \"1 /s\""));
+  EXPECT_TRUE(Contains(error_of("1 s", Dimension::StrainRate), "is a time"));
+  EXPECT_TRUE(Contains(error_of("3 /s", Dimension::Velocity), "is a rate (1/s)"));
+  EXPECT_TRUE(Contains(error_of("5 1 mm", Dimension::Length), "must be followed by \"/\""));
+  EXPECT_TRUE(Contains(error_of("5 /", Dimension::StrainRate), "cannot read the unit"));
+  EXPECT_TRUE(Contains(error_of("5 12/s", Dimension::StrainRate), "cannot read the unit"));
+  // The numerator 1 is not a number in the middle of a product.
+  EXPECT_TRUE(Contains(error_of("5 m 1/s", Dimension::Velocity), "cannot read the unit"));
+}
+
 TEST(Units, EveryExampleParsesAsItsDimension) {
   for (Dimension d : {Dimension::Dimensionless, Dimension::Length, Dimension::Velocity, Dimension::Time,
                       Dimension::Pressure, Dimension::Density, Dimension::Mass, Dimension::SpecificHeat,
-                      Dimension::Temperature, Dimension::SpecificEnergy}) {
+                      Dimension::Temperature, Dimension::SpecificEnergy, Dimension::StrainRate}) {
     EXPECT_NO_THROW(parse_quantity(impactsph::dimension_example(d), d)) << impactsph::dimension_name(d);
     EXPECT_FALSE(impactsph::dimension_name(d).empty());
   }
