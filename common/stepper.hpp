@@ -11,6 +11,7 @@ struct StepStats {
   double mean_neighbours = 0;            // mean neighbour count of the real particles
   std::size_t correction_fallbacks = 0;  // particles whose L_i was ill-conditioned (last evaluation)
   std::size_t ghosts = 0;                // mirror particles of the symmetry planes
+  double contact_work = 0;               // kinetic energy the penalty contacts took in the step, J
 };
 
 class Stepper {

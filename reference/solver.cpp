@@ -4,7 +4,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/contact.hpp"
 #include "common/correction.hpp"
+#include "common/damage.hpp"
 #include "common/delta_sph.hpp"
 #include "common/errors.hpp"
 #include "common/kernels.hpp"
@@ -35,8 +37,18 @@ bool finite(Sym3d s) {
 }  // namespace
 
 ReferenceSolver::ReferenceSolver(const Scene& scene)
-    : numerics_(scene.spec.numerics), symmetry_(scene.spec.symmetry), materials_(scene.materials) {
+    : numerics_(scene.spec.numerics), symmetry_(scene.spec.symmetry), materials_(scene.materials),
+      contacts_(scene.spec.contacts) {
   for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
+  body_count_ = scene.bodies.size();
+  contact_of_pair_.assign(body_count_ * body_count_, nullptr);
+  for (const ContactSpec& c : contacts_) {
+    if (c.kind != ContactSpec::Kind::Penalty) continue;
+    const std::size_t a = static_cast<std::size_t>(c.index_a), b = static_cast<std::size_t>(c.index_b);
+    contact_of_pair_[a * body_count_ + b] = &c;
+    contact_of_pair_[b * body_count_ + a] = &c;
+    contact_reach_ = std::max(contact_reach_, c.contact_distance * numerics_.spacing);
+  }
 }
 
 double ReferenceSolver::stable_time_step(const ParticleSet& p) {
@@ -73,7 +85,7 @@ void ReferenceSolver::find_ghosts(const std::vector<Vec3d>& pos, double margin) 
   }
 }
 
-void ReferenceSolver::evaluate(const State& y, Rates& f) {
+void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   const std::size_t n = y.pos.size();
   const std::size_t total = n + ghosts_.size();
   const std::int64_t ni = static_cast<std::int64_t>(n);
@@ -81,23 +93,25 @@ void ReferenceSolver::evaluate(const State& y, Rates& f) {
   // Fill the work arrays: real particles, then ghosts from their sources.
   x_.resize(total); v_.resize(total); rho_.resize(total); pressure_.resize(total); sound_speed_.resize(total);
   m_.resize(total); hh_.resize(total); mat_.resize(total); s_over_rho2_.resize(total); l_inverse_.resize(total);
-  grad_rho_.resize(total); grad_v_.resize(n); volume_.resize(total);
+  grad_rho_.resize(total); grad_v_.resize(n); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
   std::vector<Sym3d>& stress = stress_;
   stress.resize(total);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < ni; ++i) {
     x_[i] = y.pos[i]; v_[i] = y.vel[i]; rho_[i] = y.rho[i]; m_[i] = mass_[i]; hh_[i] = h_[i];
-    mat_[i] = material_[i]; stress[i] = y.dev_stress[i];
+    mat_[i] = material_[i]; stress[i] = y.dev_stress[i]; bb_[i] = body_[i]; damage_all_[i] = damage_[i];
     pressure_[i] = eos_pressure(materials_[static_cast<std::size_t>(mat_[i])].eos, rho_[i], y.energy[i], sound_speed_[i]);
+    apply_failure(stress[i], pressure_[i], damage_all_[i]);  // a failed particle: no deviator, no tension
   }
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
     const Ghost& g = ghosts_[k];
     const std::size_t s = static_cast<std::size_t>(g.source), i = n + k;
     x_[i] = hadamard(g.sign, y.pos[s]) + g.shift;
     v_[i] = hadamard(g.sign, y.vel[s]);
-    rho_[i] = rho_[s]; m_[i] = m_[s]; hh_[i] = hh_[s]; mat_[i] = mat_[s];
+    rho_[i] = rho_[s]; m_[i] = m_[s]; hh_[i] = hh_[s]; mat_[i] = mat_[s]; bb_[i] = bb_[s];
+    damage_all_[i] = damage_all_[s];
     pressure_[i] = pressure_[s]; sound_speed_[i] = sound_speed_[s];
-    stress[i] = mirror(y.dev_stress[s], g.sign);
+    stress[i] = mirror(stress[s], g.sign);
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(total); ++i) {
@@ -119,8 +133,10 @@ void ReferenceSolver::evaluate(const State& y, Rates& f) {
     Vec3d gr{0, 0, 0};
     const Vec3d xi = x_[i], vi = v_[i];
     const double rhoi = rho_[i], hi = hh_[i];
+    const std::int32_t bi = bb_[i];
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int32_t j = nb[k];
+      if (penalty_between(bi, bb_[j])) continue;  // bodies in penalty contact do not share sums
       const Vec3d xij = xi - x_[j];
       const double hij = 0.5 * (hi + hh_[j]);
       const double r = norm(xij);
@@ -148,30 +164,48 @@ void ReferenceSolver::evaluate(const State& y, Rates& f) {
 
   // Constitutive rate: Jaumann deviatoric stress rate of the body's strength model (F 3.5-3.7).
   f.vel.resize(n); f.acc.resize(n); f.drho.resize(n); f.denergy.resize(n); f.dstress.resize(n);
+  f.strain_rate.resize(n); f.contact_power.resize(n);
 #pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < ni; ++i)
-    f.dstress[i] = deviatoric_stress_rate(materials_[static_cast<std::size_t>(mat_[i])], y.dev_stress[i], grad_v_[i]);
+  for (std::int64_t i = 0; i < ni; ++i) {
+    f.dstress[i] = deviatoric_stress_rate(materials_[static_cast<std::size_t>(mat_[i])], stress[i], grad_v_[i]);
+    f.strain_rate[i] = equivalent_strain_rate(grad_v_[i]);
+  }
 
-  // Pass 2: continuity with delta-SPH (Marrone form), momentum (F 2.11) and energy (consistent F 2.12).
+  // Pass 2: continuity with delta-SPH (Marrone form), momentum (F 2.11) and energy (consistent F 2.12),
+  // the pair terms scaled by the damage factor 1 - D_ij (F 4.10); penalty contact (F 4.1-4.6) between
+  // bodies that do not share sums.
   const ViscosityParams<double> visc = numerics_.viscosity;
   const double delta = numerics_.delta;
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < ni; ++i) {
     const Vec3d xi = x_[i], vi = v_[i], gri = grad_rho_[i];
     const double rhoi = rho_[i], hi = hh_[i], ci = sound_speed_[i];
-    const std::int32_t mi = mat_[i];
+    const std::int32_t mi = mat_[i], bi = bb_[i];
+    const double Di = damage_all_[i];
     const Mat3d Ai = s_over_rho2_[i].full();
     const Mat3d Linv_i = l_inverse_[i];
-    Vec3d acc{0, 0, 0};
-    double de = 0, diffusion = 0;
+    Vec3d acc{0, 0, 0}, contact{0, 0, 0};
+    double de = 0, diffusion = 0, contact_power = 0;
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int32_t j = nb[k];
       const Vec3d xij = xi - x_[j];
+      if (const ContactSpec* c = penalty_between(bi, bb_[j])) {
+        const MaterialParams<double>& mat_i = materials_[static_cast<std::size_t>(mi)];
+        const MaterialParams<double>& mat_j = materials_[static_cast<std::size_t>(mat_[j])];
+        const Vec3d vij = vi - v_[j];
+        const Vec3d force = penalty_contact_force(PenaltyContactParams<double>{c->penalty_scale}, xij, vij,
+                                                  c->contact_distance * numerics_.spacing, m_[i], m_[j], hi, hh_[j],
+                                                  mat_i.strength.shear_modulus, mat_j.strength.shear_modulus, rhoi,
+                                                  rho_[j], dt);
+        contact += force;
+        contact_power += 0.5 * penalty_contact_energy_rate(force, vij);
+        continue;
+      }
       const double hij = 0.5 * (hi + hh_[j]);
       const double r = norm(xij);
       if (r >= kernel_support(hij)) continue;
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      const Vec3d gt = 0.5 * ((Linv_i + l_inverse_[j]) * gw);
+      const Vec3d gt = (0.5 * damaged_pair_factor(Di, damage_all_[j])) * ((Linv_i + l_inverse_[j]) * gw);
       const Vec3d vij = vi - v_[j];
       const double pi_ij = monaghan_viscosity(visc, xij, vij, hij, 0.5 * (ci + sound_speed_[j]), 0.5 * (rhoi + rho_[j]));
       Mat3d T = Ai + s_over_rho2_[j].full();
@@ -184,31 +218,42 @@ void ReferenceSolver::evaluate(const State& y, Rates& f) {
     const double c0 = std::sqrt(eos_reference_sound_speed2(materials_[static_cast<std::size_t>(mi)].eos));
     f.drho[i] = -rhoi * grad_v_[i].trace() + delta * hi * c0 * diffusion;
     f.denergy[i] = de;
+    f.contact_power[i] = contact_power;
     if (fixed_[i]) {
       f.vel[i] = Vec3d{0, 0, 0};
       f.acc[i] = Vec3d{0, 0, 0};
     } else {
       f.vel[i] = vi;
-      f.acc[i] = acc;
+      f.acc[i] = acc + (1.0 / m_[i]) * contact;
     }
   }
 }
 
-void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out,
-                              std::vector<double>* plastic_increment) const {
+void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {
   const std::int64_t n = static_cast<std::int64_t>(y0.pos.size());
   out.pos.resize(n); out.vel.resize(n); out.rho.resize(n); out.energy.resize(n); out.dev_stress.resize(n);
-  if (plastic_increment) plastic_increment->assign(static_cast<std::size_t>(n), 0.0);
+  if (history) {
+    history->d_eps_p.resize(static_cast<std::size_t>(n));
+    history->d_temperature.resize(static_cast<std::size_t>(n));
+    history->strain_rate.resize(static_cast<std::size_t>(n));
+  }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
     out.pos[i] = y0.pos[i] + dt * f.vel[i];
     out.vel[i] = y0.vel[i] + dt * f.acc[i];
     out.rho[i] = y0.rho[i] + dt * f.drho[i];
     out.energy[i] = y0.energy[i] + dt * f.denergy[i];
+    // Trial stress, then the plastic return at the history variables of the step start.
     Sym3d s = y0.dev_stress[i] + dt * f.dstress[i];
-    const double dep = plastic_correction(materials_[static_cast<std::size_t>(material_[i])], s);
+    const PlasticResult<double> pr = plastic_update(materials_[static_cast<std::size_t>(material_[i])], s,
+                                                    plastic_strain_[i], f.strain_rate[i], temperature_[i],
+                                                    out.rho[i], damage_[i]);
     out.dev_stress[i] = s;
-    if (plastic_increment) (*plastic_increment)[static_cast<std::size_t>(i)] = dep;
+    if (history) {
+      history->d_eps_p[i] = pr.d_eps_p;
+      history->d_temperature[i] = pr.d_T;
+      history->strain_rate[i] = f.strain_rate[i];
+    }
   }
 }
 
@@ -231,11 +276,12 @@ void ReferenceSolver::check_state(const State& y, double dt) const {
 
 void ReferenceSolver::load_constants(const ParticleSet& p) {
   mass_ = p.mass; h_ = p.h; material_ = p.material; fixed_ = p.fixed; body_ = p.body;
+  damage_ = p.damage; plastic_strain_ = p.plastic_strain; temperature_ = p.temperature;
   h_max_ = p.size() ? *std::max_element(h_.begin(), h_.end()) : 0.0;
 }
 
 void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double skin) {
-  const double support = kernel_support(h_max_);
+  const double support = std::max(kernel_support(h_max_), contact_reach_);
   find_ghosts(pos, support + skin);
   std::vector<Vec3d> points(pos);
   points.reserve(pos.size() + ghosts_.size());
@@ -250,7 +296,7 @@ std::size_t ReferenceSolver::velocity_gradients(const ParticleSet& p, std::vecto
   State y{p.pos, p.vel, p.rho, p.energy, p.dev_stress};
   build_neighbours(y.pos, 0.0);
   Rates f;
-  evaluate(y, f);
+  evaluate(y, f, 0.0);
   grad_v = grad_v_;
   return stats_.correction_fallbacks;
 }
@@ -269,23 +315,35 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
   Rates& f = rates_;
   State& y_half = y_half_;
   State& y1 = y1_;
-  std::vector<double>& plastic_increment = plastic_increment_;
-  evaluate(y0, f);
+  History& history = history_;
+  evaluate(y0, f, dt);
   advance(y0, f, 0.5 * dt, y_half, nullptr);
-  evaluate(y_half, f);
-  advance(y0, f, dt, y1, &plastic_increment);
+  evaluate(y_half, f, dt);
+  advance(y0, f, dt, y1, &history);
   check_state(y1, dt);
+  double contact_power = 0;
+  for (std::size_t i = 0; i < n; ++i) contact_power += f.contact_power[i];
+  stats_.contact_work = dt * contact_power;
 
   std::swap(p.pos, y1.pos);
   std::swap(p.vel, y1.vel);
   std::swap(p.rho, y1.rho);
   std::swap(p.energy, y1.energy);
   std::swap(p.dev_stress, y1.dev_stress);
+  // History variables of the final stage: plastic strain, adiabatic heating, damage (F 4.7-4.9).
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
-    p.plastic_strain[i] += plastic_increment[i];
+    const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
+    p.plastic_strain[i] += history.d_eps_p[i];
+    p.temperature[i] += history.d_temperature[i];
     double c = 0;
-    p.pressure[i] = eos_pressure(materials_[static_cast<std::size_t>(p.material[i])].eos, p.rho[i], p.energy[i], c);
+    p.pressure[i] = eos_pressure(mat.eos, p.rho[i], p.energy[i], c);
+    if (p.damage[i] < 1.0) {
+      const double dd = damage_increment(mat, history.d_eps_p[i], p.plastic_strain[i], p.pressure[i],
+                                         von_mises(p.dev_stress[i]), history.strain_rate[i], p.temperature[i]);
+      p.damage[i] = std::min(1.0, p.damage[i] + dd);
+    }
+    apply_failure(p.dev_stress[i], p.pressure[i], p.damage[i]);
   }
 }
 

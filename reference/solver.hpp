@@ -47,18 +47,29 @@ class ReferenceSolver final : public Stepper {
     std::vector<Vec3d> vel, acc;
     std::vector<double> drho, denergy;
     std::vector<Sym3d> dstress;
+    std::vector<double> strain_rate;    // equivalent strain rate sqrt(2/3 d':d'), 1/s (Johnson-Cook, damage)
+    std::vector<double> contact_power;  // power particle i's penalty pairs take from the motion, W
+  };
+  // What the final stage of a step does to the history variables of each particle.
+  struct History {
+    std::vector<double> d_eps_p, d_temperature, strain_rate;
   };
 
   void load_constants(const ParticleSet& p);
   void find_ghosts(const std::vector<Vec3d>& pos, double margin);
   void build_neighbours(const std::vector<Vec3d>& pos, double skin);
-  void evaluate(const State& y, Rates& f);
-  void advance(const State& y0, const Rates& f, double dt, State& out, std::vector<double>* plastic_increment) const;
+  void evaluate(const State& y, Rates& f, double dt);
+  void advance(const State& y0, const Rates& f, double dt, State& out, History* history) const;
+  // How the bodies of two particles interact: shared SPH sums or penalty contact.
+  const ContactSpec* penalty_between(std::int32_t body_a, std::int32_t body_b) const {
+    return contact_of_pair_[static_cast<std::size_t>(body_a) * body_count_ + static_cast<std::size_t>(body_b)];
+  }
   void check_state(const State& y, double dt) const;
 
   NumericsSpec numerics_;
   std::vector<SymmetryPlaneSpec> symmetry_;
   std::vector<MaterialParams<double>> materials_;
+  std::vector<ContactSpec> contacts_;
   // Constant per particle (copied from the scene at each step).
   std::vector<double> mass_, h_;
   std::vector<std::int32_t> material_;
@@ -76,11 +87,17 @@ class ReferenceSolver final : public Stepper {
   std::vector<Sym3d> s_over_rho2_;  // (S - P I) / rho^2 stored as a symmetric tensor
   std::vector<Mat3d> l_inverse_;
   std::vector<Mat3d> grad_v_;       // real particles only
+  std::vector<double> damage_, plastic_strain_, temperature_;  // history variables at the step start
+  std::vector<std::int32_t> bb_;    // body of reals and ghosts
+  std::vector<double> damage_all_;  // damage of reals and ghosts
+  std::size_t body_count_ = 0;
+  std::vector<const ContactSpec*> contact_of_pair_;  // penalty contact of a body pair, or null (shared sums)
+  double contact_reach_ = 0;        // largest penalty contact distance, m
   std::vector<Sym3d> stress_;       // deviatoric stress of reals and ghosts
   // Stage states and rates, kept between steps so that a step allocates nothing.
   State y0_, y_half_, y1_;
   Rates rates_;
-  std::vector<double> plastic_increment_;
+  History history_;
   StepStats stats_;
 };
 
