@@ -146,8 +146,22 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
                 scene.bodies[k].name.c_str(), b.mass * 1e3, b.velocity.x, b.velocity.y, b.velocity.z, b.kinetic_energy,
                 b.internal_energy);
   }
-  const double e0 = r.initial_totals.total_energy(), e1 = r.final_totals.total_energy();
-  if (e0 != 0) std::printf("  energy drift %.3g%%\n", 100 * (e1 - e0) / std::abs(e0));
+  const double e0 = r.initial_totals.total_energy();
+  const double e1 = r.final_totals.total_energy() + r.clock.contact_work;
+  if (e0 != 0) std::printf("  energy drift %.3g%% (contact took %.6g J)\n", 100 * (e1 - e0) / std::abs(e0), r.clock.contact_work);
+  const CaseObservables& o = r.observables;
+  if (r.settled) std::printf("  stopped early: the residual velocity was steady\n");
+  if (o.taylor_bar)
+    std::printf("final_length: %.4f mm\nimpact_face_diameter: %.4f mm\n", o.final_length * 1e3,
+                o.impact_face_diameter * 1e3);
+  if (o.projectile) {
+    std::printf("residual_velocity: %.2f m/s\nresidual_mass: %.2f g\n", o.residual_velocity, o.residual_mass * 1e3);
+    if (o.settled_time >= 0) std::printf("settled_time: %.1f us\n", o.settled_time * 1e6);
+    else std::printf("settled_time: not settled by the end time\n");
+  }
+  if (o.target)
+    std::printf("plug_velocity: %.2f m/s\nplug_mass: %.2f g\nperforated: %s\n", o.plug_velocity, o.plug_mass * 1e3,
+                o.perforated ? "yes" : "no");
   std::printf("results: %s (summary.json, history_*.csv, particles.pvd)\n", opt.out_dir.string().c_str());
   return 0;
 }

@@ -831,9 +831,41 @@ void read_time(const View& root, TimeSpec& time) {
   interval("checkpoint_interval", time.checkpoint_interval);
 }
 
+void read_observables(const Reporter& r, const View& root, CaseSpec& spec) {
+  const toml::node* n = root.find("observables");
+  if (!n) return;
+  if (!n->is_table())
+    root.fail("observables", "expected a table such as [observables] with projectile = \"projectile\", not " + type_name(*n));
+  const View o(r, *n->as_table(), "observables", "[observables]");
+  o.allow({"taylor_bar", "projectile", "target", "stop_when_settled", "settle_window", "settle_tolerance"});
+  ObservablesSpec& obs = spec.observables;
+  auto body = [&](const std::string& k, std::string& name, int& index) {
+    if (!o.has(k)) return;
+    name = o.string(k, "\"projectile\"");
+    Keys names;
+    for (std::size_t b = 0; b < spec.bodies.size(); ++b) {
+      names.push_back(spec.bodies[b].name);
+      if (spec.bodies[b].name == name) index = static_cast<int>(b);
+    }
+    if (index < 0) o.fail(k, "names no body: \"" + name + "\"; the bodies are " + join_quoted(names));
+  };
+  body("taylor_bar", obs.taylor_bar, obs.taylor_bar_index);
+  body("projectile", obs.projectile, obs.projectile_index);
+  body("target", obs.target, obs.target_index);
+  if (obs.target_index >= 0 && obs.projectile_index < 0)
+    o.fail("target", "needs projectile = \"...\" too: the plug is the part of the target that leaves with the projectile");
+  obs.stop_when_settled = o.boolean_or("stop_when_settled", false);
+  if (obs.stop_when_settled && obs.projectile_index < 0)
+    o.fail("stop_when_settled", "needs projectile = \"...\": the run settles when the projectile's velocity is steady");
+  obs.settle_window = o.quantity_or("settle_window", Dimension::Time, obs.settle_window);
+  o.positive("settle_window", obs.settle_window, Dimension::Time);
+  obs.settle_tolerance = o.quantity_or("settle_tolerance", Dimension::Velocity, obs.settle_tolerance);
+  o.positive("settle_tolerance", obs.settle_tolerance, Dimension::Velocity);
+}
+
 CaseSpec read_case(const toml::table& tree, const Reporter& r) {
   const View root(r, tree, "", "the case file");
-  root.allow({"case", "materials", "bodies", "boundaries", "contacts", "numerics", "time", "output"});
+  root.allow({"case", "materials", "bodies", "boundaries", "contacts", "numerics", "time", "observables", "output"});
   CaseSpec spec;
   spec.source_file = r.file();
 
@@ -849,6 +881,7 @@ CaseSpec read_case(const toml::table& tree, const Reporter& r) {
   read_contacts(root, spec);
   read_numerics(root, spec.numerics);
   read_time(root, spec.time);
+  read_observables(r, root, spec);
   if (const toml::node* n = root.find("output")) {
     if (!n->is_table()) root.fail("output", "expected a table such as [output] with vtu = true, not " + type_name(*n));
     const View o(r, *n->as_table(), "output", "[output]");
@@ -946,7 +979,7 @@ void apply_override(toml::table& root, const std::string& text, Reporter& r) {
     for (auto&& [k, v] : *m)
       if (toml::table* t = v.as_table()) materials.emplace(std::string(k.str()), t);
 
-  const Keys tables{"case", "numerics", "time", "output"};
+  const Keys tables{"case", "numerics", "time", "observables", "output"};
   toml::table* target = nullptr;
   std::size_t first_key = 1;
   const std::string& head = parts[0];

@@ -82,6 +82,17 @@ struct TimeSpec {
   double checkpoint_interval = 0;  // s (0: only at the end and when interrupted)
 };
 
+// What a case measures besides the per-body histories (observables.cpp). Names are body names.
+struct ObservablesSpec {
+  std::string taylor_bar;           // body: final_length, impact_face_diameter against the plane it rests on
+  std::string projectile;           // body: residual_velocity, residual_mass
+  std::string target;               // body: plug_mass, plug_velocity, perforated
+  int taylor_bar_index = -1, projectile_index = -1, target_index = -1;
+  bool stop_when_settled = false;   // end the run once the residual velocity is steady
+  double settle_window = 20e-6;     // s: steady when the residual velocity moved less than
+  double settle_tolerance = 1.0;    // m/s over the last settle_window
+};
+
 struct OutputSpec {
   bool vtu = true;
   bool csv = true;
@@ -98,6 +109,7 @@ struct CaseSpec {
   std::vector<ContactSpec> contacts;
   NumericsSpec numerics;
   TimeSpec time;
+  ObservablesSpec observables;
   OutputSpec output;
 };
 

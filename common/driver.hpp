@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/case_observables.hpp"
 #include "common/observables.hpp"
 #include "common/run_state.hpp"
 #include "common/scene.hpp"
@@ -29,6 +30,8 @@ struct RunResult {
   double mean_neighbours = 0;
   std::vector<BodySummary> bodies;   // at the end
   Totals initial_totals, final_totals;
+  CaseObservables observables;       // what the case's [observables] asks for, at the end
+  bool settled = false;              // ended early: the residual velocity was steady (stop_when_settled)
 };
 
 // Runs scene.particles from the start (or the checkpoint) to spec.time.end. Throws DivergenceError after

@@ -19,6 +19,13 @@ struct RunClock {
   Vec3d initial_momentum{0, 0, 0};      // totals at t = 0, kg m/s
   double initial_kinetic_energy = 0;    // J
   double initial_internal_energy = 0;   // J
+  double contact_work = 0;              // kinetic energy taken by penalty contacts so far, J
+  // Settling of the residual velocity (case_observables.hpp, track_settling).
+  double settle_initial_velocity = 0;   // m/s, at the first observation
+  double settle_window_start = -1;      // s, start of the current steady window; -1: impact not begun
+  double settle_min = 0, settle_max = 0;  // m/s, range over the current window
+  double settled_time = -1;             // s; -1: not settled
+  std::int32_t settle_observations = 0;
 };
 
 }  // namespace impactsph

@@ -1,0 +1,190 @@
+#include "common/case_observables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <map>
+#include <unordered_map>
+
+namespace impactsph {
+
+namespace {
+
+Vec3d unit(Vec3d v) {
+  const double n = norm(v);
+  return n > 0 ? (1.0 / n) * v : Vec3d{0, 0, 0};
+}
+
+// Union-find with path halving; the smaller index becomes the root so the result is order-independent.
+struct DisjointSets {
+  std::vector<std::size_t> parent;
+  explicit DisjointSets(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::size_t find(std::size_t a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  void join(std::size_t a, std::size_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+// Connects the listed particles closer than `link` with a hash grid of cells of size `link`.
+DisjointSets connect(const ParticleSet& p, const std::vector<std::size_t>& members, double link) {
+  DisjointSets sets(members.size());
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
+  auto key = [&](std::int64_t x, std::int64_t y, std::int64_t z) { return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791); };
+  auto coord = [&](double v) { return static_cast<std::int64_t>(std::floor(v / link)); };
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const Vec3d& x = p.pos[members[k]];
+    cells[key(coord(x.x), coord(x.y), coord(x.z))].push_back(k);
+  }
+  const double link2 = link * link;
+  for (std::size_t k = 0; k < members.size(); ++k) {
+    const Vec3d& x = p.pos[members[k]];
+    const std::int64_t cx = coord(x.x), cy = coord(x.y), cz = coord(x.z);
+    for (std::int64_t dz = -1; dz <= 1; ++dz)
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+          const auto it = cells.find(key(cx + dx, cy + dy, cz + dz));
+          if (it == cells.end()) continue;
+          for (std::size_t q : it->second)
+            if (q > k && norm2(p.pos[members[q]] - x) < link2) sets.join(k, q);
+        }
+  }
+  return sets;
+}
+
+}  // namespace
+
+int symmetry_multiplicity(const CaseSpec& spec, int body) {
+  const BodySpec& b = spec.bodies[static_cast<std::size_t>(body)];
+  int m = 1;
+  for (const SymmetryPlaneSpec& plane : spec.symmetry) {
+    double lo, hi;
+    if (b.shape == Shape::Box) {
+      lo = b.box_min[plane.axis];
+      hi = b.box_max[plane.axis];
+    } else if (plane.axis == b.axis) {
+      lo = std::min(b.base[plane.axis], b.base[plane.axis] + b.length);
+      hi = std::max(b.base[plane.axis], b.base[plane.axis] + b.length);
+    } else {
+      lo = b.base[plane.axis] - b.radius;
+      hi = b.base[plane.axis] + b.radius;
+    }
+    if (plane.position > lo && plane.position < hi) m *= 2;
+  }
+  return m;
+}
+
+CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
+  const CaseSpec& spec = scene.spec;
+  const ObservablesSpec& os = spec.observables;
+  const double dx = spec.numerics.spacing;
+  CaseObservables out;
+
+  if (os.taylor_bar_index >= 0) {
+    // The wall is the symmetry plane normal to the bar's axis; the bar rests on it.
+    const int body = os.taylor_bar_index;
+    const BodySpec& b = spec.bodies[static_cast<std::size_t>(body)];
+    const int axis = b.shape == Shape::Cylinder ? b.axis : 2;
+    double wall = 0;
+    for (const SymmetryPlaneSpec& plane : spec.symmetry)
+      if (plane.axis == axis) wall = plane.position;
+    double far = 0, r_face = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.body[i] != body) continue;
+      const double along = std::abs(p.pos[i][axis] - wall);
+      far = std::max(far, along);
+      if (along < dx) {
+        double r2 = 0;
+        for (int a = 0; a < 3; ++a)
+          if (a != axis) r2 += sqr(p.pos[i][a] - b.base[a]);
+        r_face = std::max(r_face, std::sqrt(r2));
+      }
+    }
+    // A particle stands for a cube of side dx: the body extends dx/2 past the outermost centres.
+    out.taylor_bar = true;
+    out.final_length = far + 0.5 * dx;
+    out.impact_face_diameter = 2 * (r_face + 0.5 * dx);
+  }
+
+  Vec3d direction{0, 0, 0};
+  if (os.projectile_index >= 0) {
+    const int body = os.projectile_index;
+    direction = unit(spec.bodies[static_cast<std::size_t>(body)].velocity);
+    double m = 0, mv = 0, failed = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.body[i] != body) continue;
+      m += p.mass[i];
+      mv += p.mass[i] * dot(p.vel[i], direction);
+      if (p.damage[i] >= 0.99) failed += p.mass[i];
+    }
+    out.projectile = true;
+    out.residual_velocity = m > 0 ? mv / m : 0.0;
+    out.residual_mass = symmetry_multiplicity(spec, body) * (m - failed);
+  }
+
+  if (os.target_index >= 0) {
+    // Intact target particles linked within 1.5 dx form clusters; the cluster holding the clamped
+    // particles (or, with none, the heaviest) is the plate; the plug is the heaviest other cluster that
+    // moves away along the impact direction.
+    const int body = os.target_index;
+    std::vector<std::size_t> members;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.body[i] == body && p.damage[i] < 1.0) members.push_back(i);
+    DisjointSets sets = connect(p, members, 1.5 * dx);
+    std::map<std::size_t, double> mass, momentum;  // ordered by root: ties resolve the same way every run
+    std::map<std::size_t, bool> clamped;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      const std::size_t i = members[k], root = sets.find(k);
+      mass[root] += p.mass[i];
+      momentum[root] += p.mass[i] * dot(p.vel[i], direction);
+      if (p.fixed[i]) clamped[root] = true;
+    }
+    const bool any_clamped = !clamped.empty();
+    std::size_t plate = 0;
+    double plate_mass = -1;
+    for (const auto& [root, m] : mass)
+      if ((!any_clamped || clamped.count(root)) && m > plate_mass) {
+        plate = root;
+        plate_mass = m;
+      }
+    double plug_mass = 0, plug_momentum = 0;
+    for (const auto& [root, m] : mass)
+      if (root != plate && momentum[root] > 0 && m > plug_mass) {
+        plug_mass = m;
+        plug_momentum = momentum[root];
+      }
+    out.target = true;
+    out.plug_mass = symmetry_multiplicity(spec, body) * plug_mass;
+    out.plug_velocity = plug_mass > 0 ? plug_momentum / plug_mass : 0.0;
+    out.perforated = plug_mass > 0 && out.plug_velocity > os.settle_tolerance;
+  }
+  return out;
+}
+
+void track_settling(const ObservablesSpec& spec, double time, double v, RunClock& c) {
+  if (c.settle_observations++ == 0) {
+    c.settle_initial_velocity = v;
+    return;
+  }
+  if (c.settle_window_start < 0) {
+    if (std::abs(v - c.settle_initial_velocity) <= spec.settle_tolerance) return;
+    c.settle_window_start = time;
+    c.settle_min = c.settle_max = v;
+    return;
+  }
+  c.settle_min = std::min(c.settle_min, v);
+  c.settle_max = std::max(c.settle_max, v);
+  if (c.settle_max - c.settle_min > spec.settle_tolerance) {
+    c.settle_window_start = time;
+    c.settle_min = c.settle_max = v;
+    c.settled_time = -1;
+    return;
+  }
+  if (c.settled_time < 0 && time - c.settle_window_start >= spec.settle_window) c.settled_time = c.settle_window_start;
+}
+
+}  // namespace impactsph

@@ -1,0 +1,36 @@
+// The observables a case asks for in [observables] (host only): Taylor bar shape, projectile residual
+// velocity and mass, plug and perforation, and when the residual velocity settled. Masses are those of
+// the whole physical body: a body cut by k symmetry planes is 2^k times its model.
+#pragma once
+#include <string>
+
+#include "common/run_state.hpp"
+#include "common/scene.hpp"
+
+namespace impactsph {
+
+struct CaseObservables {
+  bool taylor_bar = false;
+  double final_length = 0;          // m, from the wall plane to the far end of the bar
+  double impact_face_diameter = 0;  // m, of the layer of particles on the wall
+  bool projectile = false;
+  double residual_velocity = 0;     // m/s, mass-weighted velocity along the initial direction
+  double residual_mass = 0;         // kg, initial mass less the particles with D >= 0.99 (X section 3.1)
+  bool target = false;
+  double plug_mass = 0;             // kg, the heaviest cluster of intact target particles that left the plate
+  double plug_velocity = 0;         // m/s, its mass-weighted velocity along the impact direction
+  bool perforated = false;
+  double settled_time = -1;         // s, since when the residual velocity has been steady; -1: not yet
+};
+
+// How many copies of a body's model make the whole body: 2 for each symmetry plane that cuts its shape.
+int symmetry_multiplicity(const CaseSpec& spec, int body);
+
+CaseObservables measure_observables(const Scene& scene, const ParticleSet& p);
+
+// Tracks whether the residual velocity has settled (state kept in RunClock so a restart continues it):
+// the velocity must first leave its initial value by more than the tolerance (the impact has begun),
+// then stay within the tolerance for the settle window.
+void track_settling(const ObservablesSpec& spec, double time, double residual_velocity, RunClock& clock);
+
+}  // namespace impactsph
