@@ -25,7 +25,7 @@ struct RunClock {
   double settle_window_start = -1;      // s, start of the current steady window; -1: impact not begun
   double settle_min = 0, settle_max = 0;  // m/s, range over the current window
   double settled_time = -1;             // s; -1: not settled
-  std::int32_t settle_observations = 0;
+  std::int64_t settle_observations = 0;  // 64-bit: no padding, so a checkpoint holds no uninitialised bytes
 };
 
 }  // namespace impactsph
