@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <limits>
 #include <map>
 #include <unordered_map>
 
@@ -127,40 +128,40 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
   }
 
   if (os.target_index >= 0) {
-    // Intact target particles linked within 1.5 dx form clusters; the cluster holding the clamped
-    // particles (or, with none, the heaviest) is the plate; the plug is the heaviest other cluster that
-    // moves away along the impact direction.
+    // The plug: target particles that leave with the projectile, i.e. move along the impact direction
+    // faster than half the projectile's residual velocity, linked into clusters by distance (1.5 dx);
+    // the heaviest cluster is the plug. Damage is ignored: a plug can be fully failed and still a plug.
+    // Perforated: the projectile still moves on, a plug left with it, and its nose has passed the rear face
+    // of the plate (the clamped particles mark where the plate is).
     const int body = os.target_index;
+    const double v_cut = 0.5 * out.residual_velocity;
     std::vector<std::size_t> members;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.body[i] == body && p.damage[i] < 1.0) members.push_back(i);
+    if (out.residual_velocity > os.settle_tolerance)
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.body[i] == body && dot(p.vel[i], direction) > v_cut) members.push_back(i);
     DisjointSets sets = connect(p, members, 1.5 * dx);
     std::map<std::size_t, double> mass, momentum;  // ordered by root: ties resolve the same way every run
-    std::map<std::size_t, bool> clamped;
     for (std::size_t k = 0; k < members.size(); ++k) {
       const std::size_t i = members[k], root = sets.find(k);
       mass[root] += p.mass[i];
       momentum[root] += p.mass[i] * dot(p.vel[i], direction);
-      if (p.fixed[i]) clamped[root] = true;
     }
-    const bool any_clamped = !clamped.empty();
-    std::size_t plate = 0;
-    double plate_mass = -1;
-    for (const auto& [root, m] : mass)
-      if ((!any_clamped || clamped.count(root)) && m > plate_mass) {
-        plate = root;
-        plate_mass = m;
-      }
     double plug_mass = 0, plug_momentum = 0;
     for (const auto& [root, m] : mass)
-      if (root != plate && momentum[root] > 0 && m > plug_mass) {
+      if (m > plug_mass) {
         plug_mass = m;
         plug_momentum = momentum[root];
       }
+    double plate_rear = -std::numeric_limits<double>::max(), projectile_nose = -std::numeric_limits<double>::max();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.body[i] == body && p.fixed[i]) plate_rear = std::max(plate_rear, dot(p.pos[i], direction));
+      if (p.body[i] == os.projectile_index) projectile_nose = std::max(projectile_nose, dot(p.pos[i], direction));
+    }
     out.target = true;
     out.plug_mass = symmetry_multiplicity(spec, body) * plug_mass;
     out.plug_velocity = plug_mass > 0 ? plug_momentum / plug_mass : 0.0;
-    out.perforated = plug_mass > 0 && out.plug_velocity > os.settle_tolerance;
+    out.perforated = out.residual_velocity > os.settle_tolerance && plug_mass > 0 &&
+                     (plate_rear == -std::numeric_limits<double>::max() || projectile_nose > plate_rear + dx);
   }
   return out;
 }

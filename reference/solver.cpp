@@ -18,6 +18,9 @@ namespace impactsph::reference {
 
 namespace {
 
+// Lowest density a particle may reach, as a fraction of its material's reference density.
+constexpr double kMinDensityRatio = 0.5;
+
 Vec3d hadamard(Vec3d a, Vec3d b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
 
 // Mirror image of a symmetric tensor under x'_a = sign_a x_a: T'_ab = sign_a sign_b T_ab.
@@ -41,6 +44,12 @@ ReferenceSolver::ReferenceSolver(const Scene& scene)
       contacts_(scene.spec.contacts) {
   for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
   body_count_ = scene.bodies.size();
+  // The model lies on one side of each symmetry plane (the scene builder guarantees it).
+  for (const SymmetryPlaneSpec& plane : symmetry_) {
+    double side = 0;
+    for (const Vec3d& x : scene.particles.pos) side += x[plane.axis] - plane.position;
+    plane_side_.push_back(side >= 0 ? 1.0 : -1.0);
+  }
   contact_of_pair_.assign(body_count_ * body_count_, nullptr);
   for (const ContactSpec& c : contacts_) {
     if (c.kind != ContactSpec::Kind::Penalty) continue;
@@ -241,7 +250,20 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
   for (std::int64_t i = 0; i < n; ++i) {
     out.pos[i] = y0.pos[i] + dt * f.vel[i];
     out.vel[i] = y0.vel[i] + dt * f.acc[i];
-    out.rho[i] = y0.rho[i] + dt * f.drho[i];
+    // A symmetry plane is also a frictionless wall: a particle that crossed it is reflected back, with
+    // its normal velocity reversed (its mirror image crossed the other way).
+    for (std::size_t k = 0; k < symmetry_.size(); ++k) {
+      const int a = symmetry_[k].axis;
+      const double c = symmetry_[k].position;
+      if ((out.pos[i][a] - c) * plane_side_[k] < 0) {
+        out.pos[i][a] = 2 * c - out.pos[i][a];
+        out.vel[i][a] = -out.vel[i][a];
+      }
+    }
+    // Density floor: a solid torn apart does not rarefy below a fraction of its reference density; the
+    // explicit continuity update can overshoot for a lone pair of separating fragments.
+    const double rho_floor = kMinDensityRatio * materials_[static_cast<std::size_t>(material_[i])].eos.rho0;
+    out.rho[i] = std::max(rho_floor, y0.rho[i] + dt * f.drho[i]);
     out.energy[i] = y0.energy[i] + dt * f.denergy[i];
     // Trial stress, then the plastic return at the history variables of the step start.
     Sym3d s = y0.dev_stress[i] + dt * f.dstress[i];

@@ -68,6 +68,7 @@ class ReferenceSolver final : public Stepper {
 
   NumericsSpec numerics_;
   std::vector<SymmetryPlaneSpec> symmetry_;
+  std::vector<double> plane_side_;  // +1 or -1: the side of each symmetry plane the model lies on
   std::vector<MaterialParams<double>> materials_;
   std::vector<ContactSpec> contacts_;
   // Constant per particle (copied from the scene at each step).
