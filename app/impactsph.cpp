@@ -2,6 +2,7 @@
 //   impactsph run CASE.toml [--out DIR] [--threads N] [--spacing X] [--set key=value ...] [--quiet]
 //   impactsph run --restart DIR
 //   impactsph check CASE.toml [--spacing X] [--set key=value ...]
+//   impactsph ballistic-limit CASE.toml --from V1 --to V2 [--tolerance DV] [--jobs N] [--out DIR] ...
 #include <omp.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "app/ballistic_limit.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
@@ -182,7 +184,8 @@ int main(int argc, char** argv) {
       "ImpactSPH: high-velocity impact of solids with 3D SPH.\n\n"
       "  impactsph check cases/elastic-wave/case.toml      validate a case and print its scene\n"
       "  impactsph run cases/elastic-wave/case.toml        run it (results in runs/<case name>/)\n"
-      "  impactsph run --restart runs/elastic-wave         continue a stopped run from its checkpoint\n\n"
+      "  impactsph run --restart runs/elastic-wave         continue a stopped run from its checkpoint\n"
+      "  impactsph ballistic-limit cases/plate-8mm/case.toml --from 100 --to 300   find the ballistic limit\n\n"
       "Values take units: --spacing 0.5mm, --set projectile.velocity=\"298 m/s\". Case files: docs/case-files.md"};
   app.require_subcommand(1);
 
@@ -206,6 +209,24 @@ int main(int argc, char** argv) {
   CLI::App* check = app.add_subcommand("check", "validate a case file and print the scene it builds");
   check->add_option("case", check_args.case_file, "case file (TOML)")->required()->check(CLI::ExistingFile);
   add_case_options(check, check_args);
+  BallisticOptions ballistic_opt;
+  CaseArgs ballistic_args;
+  CLI::App* ballistic = app.add_subcommand(
+      "ballistic-limit", "bracket the ballistic limit of a perforation case with parallel runs and fit the "
+                         "Recht-Ipson curve (docs/ballistic-limit.md)");
+  ballistic->add_option("case", ballistic_args.case_file, "case file (TOML) with [observables] projectile and target")
+      ->required()
+      ->check(CLI::ExistingFile);
+  ballistic->add_option("--from", ballistic_opt.from, "impact speed that does not perforate (\"150 m/s\"; bare: m/s)")
+      ->required();
+  ballistic->add_option("--to", ballistic_opt.to, "impact speed that perforates")->required();
+  ballistic->add_option("--tolerance", ballistic_opt.tolerance, "stop when the bracket is this narrow")
+      ->capture_default_str();
+  ballistic->add_option("--jobs", ballistic_opt.jobs, "runs at a time (default: one per core)")
+      ->check(CLI::PositiveNumber);
+  ballistic->add_option("--out", ballistic_opt.out, "output folder (default runs/<case name>-ballistic)");
+  ballistic->add_flag("--quiet,-q", ballistic_opt.quiet, "print only the results, no line per run");
+  add_case_options(ballistic, ballistic_args);
 
   try {
     app.parse(argc, argv);
@@ -214,6 +235,13 @@ int main(int argc, char** argv) {
   }
   try {
     if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all);
+    if (*ballistic) {
+      ballistic_opt.case_file = ballistic_args.case_file;
+      ballistic_opt.spacing = ballistic_args.spacing;
+      ballistic_opt.sets = ballistic_args.sets;
+      ballistic_opt.command_line = argv_all;
+      return ballistic_limit_command(ballistic_opt);
+    }
     return check_command(check_args);
   } catch (const CaseError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());

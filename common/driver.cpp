@@ -23,22 +23,26 @@ std::atomic<int> g_stop_signal{0};
 extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
 
 // Installs the SIGINT/SIGTERM handlers for the lifetime of a run and restores the old ones after.
+// Not for concurrent runs (the handlers and the flag are process-wide): those pass install = false.
 class StopSignals {
  public:
-  StopSignals() {
+  explicit StopSignals(bool install) : installed_(install) {
+    if (!installed_) return;
     g_stop_signal.store(0);
     old_int_ = std::signal(SIGINT, on_stop_signal);
     old_term_ = std::signal(SIGTERM, on_stop_signal);
   }
   ~StopSignals() {
+    if (!installed_) return;
     std::signal(SIGINT, old_int_);
     std::signal(SIGTERM, old_term_);
   }
-  int received() const { return g_stop_signal.load(); }
+  int received() const { return installed_ ? g_stop_signal.load() : 0; }
 
  private:
-  void (*old_int_)(int);
-  void (*old_term_)(int);
+  bool installed_;
+  void (*old_int_)(int) = nullptr;
+  void (*old_term_)(int) = nullptr;
 };
 
 std::string format_seconds(double s) {
@@ -185,7 +189,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
 
   const bool tty = isatty(fileno(stderr)) != 0;
   const bool progress = !opt.quiet && tty;
-  StopSignals signals;
+  StopSignals signals(opt.install_signal_handlers);
   const auto wall_start = std::chrono::steady_clock::now();
   auto last_progress = wall_start;
   const double wall_before = clock.wall_seconds;

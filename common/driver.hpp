@@ -20,6 +20,9 @@ struct RunOptions {
   std::string fingerprint;       // identifies case + overrides; a restart must match it
   bool restart = false;          // continue from out_dir/checkpoint.bin
   std::vector<std::string> command_line;  // recorded in summary.json
+  // Catch SIGINT/SIGTERM for a clean stop. Handlers are process-wide: callers running several
+  // simulations on threads pass false and handle the signals themselves.
+  bool install_signal_handlers = true;
 };
 
 struct RunResult {

@@ -11,7 +11,7 @@ JOBS=${JOBS:-$(nproc)}
 
 # Debian packages the build needs; installed only when one is missing.
 PACKAGES=(cmake g++ make libeigen3-dev libgsl-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-          libgtest-dev libbenchmark-dev)
+          libgtest-dev libbenchmark-dev gnuplot-nox)
 
 install_missing() {
   local missing=()
@@ -35,8 +35,8 @@ install_missing
 build
 case "${1:-run}" in
   run)
-    # The main job. Until the plate-penetration case lands this is the elastic-wave verification case.
-    "$BUILD_DIR"/impactsph run cases/elastic-wave/case.toml --spacing 0.5mm --out runs/elastic-wave
+    # The main job: plate perforation (paper F scenario 1) at a coarse spacing that runs in seconds.
+    "$BUILD_DIR"/impactsph run cases/plate-8mm/case.toml --spacing 2mm --out runs/plate-8mm
     ;;
   test)
     # Everything but the long validation runs and the GPU tests (labels: unit, analytic, crosscheck).
