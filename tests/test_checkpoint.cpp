@@ -13,28 +13,16 @@
 #include <vector>
 
 #include "common/checkpoint.hpp"
+#include "tests/temp_dir_test.hpp"
 
 namespace impactsph {
 namespace {
 
 namespace fs = std::filesystem;
 
-class CheckpointTest : public ::testing::Test {
+class CheckpointTest : public TempDirTest {
  protected:
-  void SetUp() override {
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() /
-           ("impactsph_checkpoint_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
+  CheckpointTest() : TempDirTest("impactsph_checkpoint") {}
   static void spit(const fs::path& path, const std::string& bytes) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out << bytes;
@@ -51,7 +39,6 @@ class CheckpointTest : public ::testing::Test {
     return "<no exception>";
   }
 
-  fs::path dir_;
 };
 
 // Values that only a raw copy preserves: NaN payloads, signed zero, subnormals.

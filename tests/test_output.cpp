@@ -12,28 +12,16 @@
 #include <vector>
 
 #include "common/output.hpp"
+#include "tests/temp_dir_test.hpp"
 
 namespace impactsph {
 namespace {
 
 namespace fs = std::filesystem;
 
-class OutputTest : public ::testing::Test {
+class OutputTest : public TempDirTest {
  protected:
-  void SetUp() override {
-    std::random_device rd;
-    dir_ = fs::temp_directory_path() /
-           ("impactsph_output_" + std::to_string(::getpid()) + "_" + std::to_string(rd()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
+  OutputTest() : TempDirTest("impactsph_output") {}
   std::vector<std::string> listing() const {
     std::vector<std::string> names;
     for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
@@ -41,7 +29,6 @@ class OutputTest : public ::testing::Test {
     return names;
   }
 
-  fs::path dir_;
 };
 
 template <class F>
