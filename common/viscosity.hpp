@@ -22,4 +22,16 @@ IMPACTSPH_HD Real monaghan_viscosity(const ViscosityParams<Real>& p, Vec3<Real> 
   return (-p.linear * c_mean * phi + p.quadratic * phi * phi) / rho_mean;
 }
 
+// Balsara (1995) shear limiter of particle i, in [0, 1]: |div v| / (|div v| + |curl v| + 0.0001 c/h).
+// Near 1 in compression (shocks), near 0 in shear and isochoric plastic flow, where the Monaghan term
+// otherwise acts as a physical viscosity. The pair uses the mean of the two factors.
+template <class Real>
+IMPACTSPH_HD Real balsara_factor(const Mat3<Real>& grad_v, Real sound_speed, Real h) {
+  const Real div = grad_v.trace();
+  const Real cx = grad_v.m[2][1] - grad_v.m[1][2], cy = grad_v.m[0][2] - grad_v.m[2][0], cz = grad_v.m[1][0] - grad_v.m[0][1];
+  const Real curl = std::sqrt(cx * cx + cy * cy + cz * cz);
+  const Real a = div < Real(0) ? -div : div;
+  return a / (a + curl + Real(1e-4) * sound_speed / h);
+}
+
 }  // namespace impactsph

@@ -164,11 +164,17 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     grad_rho_[i] = Linv * gr;
   }
   stats_.correction_fallbacks = fallbacks;
+  // Viscosity factor per particle: 1, or the Balsara shear limiter of its velocity gradient.
+  av_factor_.resize(total);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < ni; ++i)
+    av_factor_[i] = numerics_.viscosity_balsara ? balsara_factor(grad_v_[i], sound_speed_[i], hh_[i]) : 1.0;
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
     const Ghost& g = ghosts_[k];
     const std::size_t s = static_cast<std::size_t>(g.source);
     l_inverse_[n + k] = mirror(l_inverse_[s], g.sign);
     grad_rho_[n + k] = hadamard(g.sign, grad_rho_[s]);
+    av_factor_[n + k] = av_factor_[s];
   }
 
   // Constitutive rate: Jaumann deviatoric stress rate of the body's strength model (F 3.5-3.7).
@@ -216,7 +222,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
       const Vec3d gt = (0.5 * damaged_pair_factor(Di, damage_all_[j])) * ((Linv_i + l_inverse_[j]) * gw);
       const Vec3d vij = vi - v_[j];
-      const double pi_ij = monaghan_viscosity(visc, xij, vij, hij, 0.5 * (ci + sound_speed_[j]), 0.5 * (rhoi + rho_[j]));
+      const double pi_ij = 0.5 * (av_factor_[i] + av_factor_[j]) *
+                           monaghan_viscosity(visc, xij, vij, hij, 0.5 * (ci + sound_speed_[j]), 0.5 * (rhoi + rho_[j]));
       Mat3d T = Ai + s_over_rho2_[j].full();
       T.m[0][0] -= pi_ij; T.m[1][1] -= pi_ij; T.m[2][2] -= pi_ij;
       const Vec3d tg = T * gt;

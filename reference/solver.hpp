@@ -83,7 +83,7 @@ class ReferenceSolver final : public Stepper {
   NeighbourList neighbours_;
   // Work arrays over real particles followed by ghosts.
   std::vector<Vec3d> x_, v_, grad_rho_;
-  std::vector<double> rho_, pressure_, sound_speed_, m_, hh_, volume_;
+  std::vector<double> rho_, pressure_, sound_speed_, m_, hh_, volume_, av_factor_;
   std::vector<std::int32_t> mat_;
   std::vector<Sym3d> s_over_rho2_;  // (S - P I) / rho^2 stored as a symmetric tensor
   std::vector<Mat3d> l_inverse_;

@@ -236,3 +236,21 @@ TYPED_TEST(ViscosityTyped, SignalSpeedIsLongitudinalWaveSpeedForWeldox) {
 }
 
 }  // namespace
+
+namespace {
+
+// Balsara (1995) limiter: 1 in pure compression, 0 in rigid rotation, small in simple shear.
+TEST(BalsaraFactor, CompressionRotationAndShear) {
+  using impactsph::Mat3;
+  const double c = 5000.0, h = 1e-3;  // the floor term 1e-4 c/h = 500 1/s
+  const Mat3<double> compression{{{-1e5, 0, 0}, {0, -1e5, 0}, {0, 0, -1e5}}};
+  const Mat3<double> rotation{{{0, -1e5, 0}, {1e5, 0, 0}, {0, 0, 0}}};
+  const Mat3<double> shear{{{0, 1e5, 0}, {0, 0, 0}, {0, 0, 0}}};
+  EXPECT_NEAR(impactsph::balsara_factor(compression, c, h), 3e5 / (3e5 + 500.0), 1e-15);
+  EXPECT_NEAR(impactsph::balsara_factor(rotation, c, h), 0.0, 1e-15);
+  EXPECT_NEAR(impactsph::balsara_factor(shear, c, h), 0.0, 1e-15);  // isochoric: no divergence
+  const Mat3<double> mixed{{{-1e5, 1e5, 0}, {0, 0, 0}, {0, 0, 0}}};     // |div| = |curl| = 1e5
+  EXPECT_NEAR(impactsph::balsara_factor(mixed, c, h), 1e5 / (2e5 + 500.0), 1e-15);
+}
+
+}  // namespace
