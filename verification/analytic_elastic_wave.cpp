@@ -102,6 +102,8 @@ TEST(ElasticWave, ErrorShrinksWithSpacing) {
   const WaveResult coarse = run_wave("1 mm");
   const WaveResult fine = run_wave("0.5 mm");
   EXPECT_LT(fine.velocity_l1, 0.8 * coarse.velocity_l1) << "velocity profile error did not shrink";
+  // The speed error is below the resolution of the front fit at both spacings (0.025 % and 0.047 %
+  // measured), so it need not fall; it may not grow past 0.2 %. The error that must shrink is the profile's.
   EXPECT_LE(std::abs(fine.speed / kCL - 1), std::abs(coarse.speed / kCL - 1) + 2e-3);
   EXPECT_NEAR(fine.speed / kCL, 1.0, 0.01);
   EXPECT_NEAR(fine.stress / (kRho * kCL * kV), 1.0, 0.03);
