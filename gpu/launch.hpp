@@ -2,6 +2,9 @@
 // blocks, checked for errors at once; in the host build the same device lambda runs in an OpenMP parallel
 // loop (static schedule, so each item runs the same code in the same order whatever the thread count).
 // Lambdas are written [=] IMPACTSPH_LAMBDA (std::int64_t i) { ... } and capture raw pointers by value.
+// FlushDenormals (the float build): subnormal floats are read and written as zero, as the CUDA build
+// does with -ftz=true. The precursor of a wave decays through the subnormal range ahead of the front,
+// where x86 arithmetic is about a hundred times slower; values below 1.2e-38 carry no physics here.
 #pragma once
 #include <cstdint>
 #include <stdexcept>
@@ -14,6 +17,9 @@
 #else
 #define IMPACTSPH_LAMBDA
 #define IMPACTSPH_GPU_HD
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 #endif
 
 namespace impactsph::gpu {
@@ -32,7 +38,7 @@ __global__ void for_each_kernel(std::int64_t n, F f) {
 
 constexpr int kBlock = 256;
 
-template <class F>
+template <bool FlushDenormals = false, class F>
 void launch(const char* name, std::int64_t n, F f) {
   if (n <= 0) return;
   const std::int64_t blocks = (n + kBlock - 1) / kBlock;
@@ -43,10 +49,38 @@ void launch(const char* name, std::int64_t n, F f) {
 #endif
 }
 #else
-template <class F>
+// Sets the flush-to-zero and denormals-are-zero bits of this thread for its lifetime, then restores them.
+class DenormalFlush {
+ public:
+  explicit DenormalFlush(bool on) {
+#if defined(__SSE__)
+    saved_ = _mm_getcsr();
+    if (on) _mm_setcsr(saved_ | 0x8040u);  // FTZ (bit 15) and DAZ (bit 6)
+#else
+    (void)on;
+#endif
+  }
+  ~DenormalFlush() {
+#if defined(__SSE__)
+    _mm_setcsr(saved_);
+#endif
+  }
+  DenormalFlush(const DenormalFlush&) = delete;
+  DenormalFlush& operator=(const DenormalFlush&) = delete;
+
+ private:
+  unsigned saved_ = 0;
+};
+
+template <bool FlushDenormals = false, class F>
 void launch(const char*, std::int64_t n, F f) {
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < n; ++i) f(i);
+  if (n <= 0) return;
+#pragma omp parallel
+  {
+    const DenormalFlush flush(FlushDenormals);
+#pragma omp for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i) f(i);
+  }
 }
 #endif
 

@@ -7,6 +7,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "common/scene.hpp"
 #include "common/stepper.hpp"
@@ -16,6 +17,14 @@ namespace impactsph::gpu {
 enum class Precision { Double, Float };
 inline const char* precision_name(Precision p) { return p == Precision::Double ? "double" : "float"; }
 
+// Time spent in one phase of the step since profiling was switched on (CUDA events on the device, the
+// steady clock in the host build).
+struct PhaseTime {
+  std::string name;
+  long calls = 0;
+  double seconds = 0;
+};
+
 // The interface of a gpu solver beyond Stepper.
 class GpuStepper : public Stepper {
  public:
@@ -23,11 +32,15 @@ class GpuStepper : public Stepper {
   // ParticleSet it was given; with deferred copies it does so only in copy_to_host (the run driver calls
   // that before reading the particles, so the host only launches and copies back for output).
   virtual void defer_host_copies(bool defer) = 0;
-  virtual void copy_to_host(ParticleSet& p) = 0;
+  void copy_to_host(ParticleSet& p) override = 0;
   // Forget the device state: the next call reads the ParticleSet again (after it was changed outside).
   virtual void reload() = 0;
-  // Steps since the last sort of the particles by cell, and how many sorts so far.
+  // How many times the particles were sorted by cell (and their neighbour lists rebuilt).
   virtual long sorts() const = 0;
+  // Per-phase timing (sort, time_step, gather, pass1, pass2, advance, check, finish); off by default, since
+  // on the device it synchronises after each phase.
+  virtual void profile_phases(bool on) = 0;
+  virtual std::vector<PhaseTime> phase_times() const = 0;
 };
 
 namespace host {

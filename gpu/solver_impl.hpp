@@ -7,11 +7,12 @@
 //   * storage: structure of arrays in device memory, one array per field; the real particles are kept in
 //     the order of their cells (re-sorted when they have moved enough), and `original` maps back;
 //   * neighbours: all points (reals and symmetry ghosts) sorted by cell key (stable radix sort), cell
-//     ranges cell_start[c] .. cell_start[c+1]; each evaluation gathers the fields into work arrays in that
-//     sorted order, and every pass is one thread per particle gathering over the 5x5x5 cells of half the
-//     search radius around its own (no atomics: each thread owns its sums, summed in a fixed order);
-//   * the sort is kept while no particle can have moved half the skin (Verlet criterion), so the cells
-//     hold every pair that can come within the kernel support or the contact distance.
+//     ranges cell_start[c] .. cell_start[c+1]; at each sort one thread per particle gathers over the 5x5x5
+//     cells of half the search radius around its own into its Verlet list (count, scan, fill);
+//   * each evaluation gathers the fields into work arrays in the sorted order, and every pass is one
+//     thread per particle summing over its list (no atomics: each thread owns its sums, in a fixed order);
+//   * the sort and the lists are kept while no particle can have moved half the skin (Verlet criterion),
+//     so the lists hold every pair that can come within the kernel support or the contact distance.
 // Double build: the same pairs and formulas as the reference, summed in another order (round-off only).
 // Float build: every field in float except positions, kept in double so that displacements of 1e-7 of a
 // spacing are not lost; pair distances are taken in double and then rounded.
@@ -28,6 +29,7 @@
 #include <thrust/transform_reduce.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -69,6 +71,28 @@ struct Grid {
   }
 };
 
+// The sorted points and their cell ranges: cell c holds the slots cell_start[c] .. cell_start[c+1].
+struct CellRange {
+  const Vec3p* x;
+  const std::int32_t* cell_start;
+  Grid grid;
+  // Calls f(j) for every sorted slot j != s in the 5x5x5 cells around the cell of slot s.
+  template <class F> IMPACTSPH_GPU_HD void for_each_candidate(std::int64_t s, F&& f) const {
+    const Vec3p xs = x[s];
+    const std::int64_t cx = grid.coord(xs.x, 0), cy = grid.coord(xs.y, 1), cz = grid.coord(xs.z, 2);
+    const std::int64_t x0 = cx - 2 < 0 ? 0 : cx - 2, x1 = cx + 2 > grid.dims[0] - 1 ? grid.dims[0] - 1 : cx + 2;
+    const std::int64_t y0 = cy - 2 < 0 ? 0 : cy - 2, y1 = cy + 2 > grid.dims[1] - 1 ? grid.dims[1] - 1 : cy + 2;
+    const std::int64_t z0 = cz - 2 < 0 ? 0 : cz - 2, z1 = cz + 2 > grid.dims[2] - 1 ? grid.dims[2] - 1 : cz + 2;
+    for (std::int64_t z = z0; z <= z1; ++z)
+      for (std::int64_t y = y0; y <= y1; ++y) {
+        const std::int64_t row = (z * grid.dims[1] + y) * grid.dims[0];  // cells along x are contiguous
+        const std::int32_t first = cell_start[row + x0], last = cell_start[row + x1 + 1];
+        for (std::int32_t j = first; j < last; ++j)
+          if (j != s) f(j);
+      }
+  }
+};
+
 struct Box {
   Vec3p lo, hi;
 };
@@ -87,6 +111,15 @@ struct MinOf {
 struct MaxOf {
   template <class T> IMPACTSPH_GPU_HD T operator()(T a, T b) const { return a > b ? a : b; }
 };
+
+// A cheap test before the exact one (r >= kernel_support(h), with r = |x_ij| rounded to Real): true only
+// for pairs clearly beyond the support, with a margin far above the rounding of either test, so the
+// exact test decides every pair near the edge and the results do not change. Saves a square root and the
+// conversions for the quarter of the Verlet list that lies in the skin.
+template <class Real> IMPACTSPH_GPU_HD inline bool outside_support(Vec3p dx, Real h) {
+  const double s = static_cast<double>(kernel_support(h)) * (1.0 + 1e-5);
+  return norm2(dx) > s * s;
+}
 
 struct Plane {
   int axis;
@@ -134,6 +167,71 @@ IMPACTSPH_GPU_HD inline bool mirror_image(const Plane* planes, int plane_count, 
   return true;
 }
 
+// Wall time of the phases of a step: CUDA events on the device, the steady clock on the host.
+class PhaseClock {
+ public:
+  enum Phase { Sort, TimeStep, Gather, Pass1, Pass2, Advance, Check, Finish, Count };
+  static const char* name(int p) {
+    static const char* names[Count] = {"sort", "time_step", "gather", "pass1", "pass2", "advance", "check", "finish"};
+    return names[p];
+  }
+  bool on = false;
+  // begin(p) ... end(p) around the launches of a phase (extended lambdas may not sit inside a lambda, so
+  // the passes use these); time(p, f) around a call.
+  void begin() {
+    if (!on) return;
+#if defined(__CUDACC__)
+    if (!events_) {
+      check_cuda(cudaEventCreate(&start_), "cudaEventCreate");
+      check_cuda(cudaEventCreate(&stop_), "cudaEventCreate");
+      events_ = true;
+    }
+    check_cuda(cudaEventRecord(start_), "cudaEventRecord");
+#else
+    t0_ = std::chrono::steady_clock::now();
+#endif
+  }
+  void end(Phase p) {
+    if (!on) return;
+#if defined(__CUDACC__)
+    check_cuda(cudaEventRecord(stop_), "cudaEventRecord");
+    check_cuda(cudaEventSynchronize(stop_), "cudaEventSynchronize");
+    float ms = 0;
+    check_cuda(cudaEventElapsedTime(&ms, start_, stop_), "cudaEventElapsedTime");
+    seconds[p] += 1e-3 * ms;
+#else
+    seconds[p] += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+#endif
+    ++calls[p];
+  }
+  template <class F> void time(Phase p, F&& f) {
+    begin();
+    f();
+    end(p);
+  }
+  PhaseClock() = default;
+  PhaseClock(const PhaseClock&) = delete;
+  PhaseClock& operator=(const PhaseClock&) = delete;
+  ~PhaseClock() {
+#if defined(__CUDACC__)
+    if (events_) {
+      cudaEventDestroy(start_);
+      cudaEventDestroy(stop_);
+    }
+#endif
+  }
+  double seconds[Count] = {};
+  long calls[Count] = {};
+
+ private:
+#if defined(__CUDACC__)
+  bool events_ = false;
+  cudaEvent_t start_{}, stop_{};
+#else
+  std::chrono::steady_clock::time_point t0_{};
+#endif
+};
+
 template <class Real>
 struct StateArrays {
   DVec<Vec3p> pos;
@@ -157,6 +255,7 @@ template <class Real> StateView<Real> view(StateArrays<Real>& s) {
 template <class Real>
 class Solver final : public GpuStepper {
  public:
+  static constexpr bool kFlush = sizeof(Real) < sizeof(double);  // float: subnormals to zero (launch.hpp)
   Solver(const Scene& scene, const char* build) : numerics_(scene.spec.numerics) {
     const bool dbl = sizeof(Real) == sizeof(double);
     name_ = std::string("gpu port (") + (dbl ? "double" : "float") + ", " + build + ")";
@@ -199,6 +298,12 @@ class Solver final : public GpuStepper {
   void defer_host_copies(bool defer) override { defer_ = defer; }
   void reload() override { resident_ = false; }
   long sorts() const override { return sorts_; }
+  void profile_phases(bool on) override { clock_.on = on; }
+  std::vector<PhaseTime> phase_times() const override {
+    std::vector<PhaseTime> r;
+    for (int k = 0; k < PhaseClock::Count; ++k) r.push_back(PhaseTime{PhaseClock::name(k), clock_.calls[k], clock_.seconds[k]});
+    return r;
+  }
 
   double stable_time_step(const ParticleSet& p) override {
     if (!resident_) upload(p);
@@ -209,15 +314,18 @@ class Solver final : public GpuStepper {
     const Real* h = raw(h_);
     const std::int32_t* mat = raw(material_);
     const Real cfl = params_.cfl;
+    clock_.begin();
     // F eq 5.1 per particle, then the minimum (an exact reduction: the same in any order).
-    launch("time_step", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>("time_step", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const MaterialParams<Real>& m = mats[mat[i]];
       Real c = 0;
       eos_pressure(m.eos, y.rho[i], y.energy[i], c);
       out[i] = cfl_time_step(cfl, h[i], signal_speed(m, c, y.rho[i]), norm(y.vel[i]));
     });
-    return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n,
-                                              std::numeric_limits<Real>::infinity(), MinOf{}));
+    const Real dt = thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n, std::numeric_limits<Real>::infinity(),
+                                   MinOf{});
+    clock_.end(PhaseClock::TimeStep);
+    return static_cast<double>(dt);
   }
 
   void copy_to_host(ParticleSet& p) override {
@@ -234,7 +342,7 @@ class Solver final : public GpuStepper {
     const Real* D = raw(damage_);
     const Real* T = raw(temperature_);
     // Scatter into the scene's order, widened to double.
-    launch("copy_to_host", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>("copy_to_host", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const std::int64_t o = orig[i];
       pos[o] = y.pos[i];
       vel[o] = cast3<double>(y.vel[i]);
@@ -261,17 +369,18 @@ class Solver final : public GpuStepper {
     // Pairs approach by at most dt vmax before the second evaluation, each particle moves at most
     // dt/2 |v| to the midpoint: keep the sort while displacement + dt vmax stays under half the skin.
     const double vmax = max_speed();
-    if (!sorted_ || max_displacement() + dt * vmax * 1.01 >= 0.5 * skin_) sort_particles();
+    if (!sorted_ || max_displacement() + dt * vmax * 1.01 >= 0.5 * skin_)
+      clock_.time(PhaseClock::Sort, [&] { sort_particles(); });
 
     evaluate(y0_, dt);
-    advance(y0_, 0.5 * dt, y_half_, false);
+    clock_.time(PhaseClock::Advance, [&] { advance(y0_, 0.5 * dt, y_half_, false); });
     evaluate(y_half_, dt);
-    advance(y0_, dt, y1_, true);
-    check_state(dt);
+    clock_.time(PhaseClock::Advance, [&] { advance(y0_, dt, y1_, true); });
+    clock_.time(PhaseClock::Check, [&] { check_state(dt); });
     stats_.contact_work =
         dt * static_cast<double>(thrust::reduce(contact_power_.begin(), contact_power_.begin() + n, Real(0)));
     std::swap(y0_, y1_);
-    finish();
+    clock_.time(PhaseClock::Finish, [&] { finish(); });
     if (!defer_) copy_to_host(p);
   }
 
@@ -327,9 +436,9 @@ class Solver final : public GpuStepper {
     thrust::sequence(original_.begin(), original_.end());
     double h_max = 0;
     for (double h : p.h) h_max = std::max(h_max, h);
-    // Search radius: the kernel support or the contact distance, plus a skin of a tenth of it.
+    // Search radius: the kernel support or the contact distance, plus a skin of 5 % of it.
     const double reach = std::max(kernel_support(h_max), contact_reach_);
-    skin_ = 0.1 * reach;
+    skin_ = 0.05 * reach;
     radius_ = reach + skin_;
     for (DVec<Real>* a : {&rate_drho_, &rate_de_, &strain_rate_, &contact_power_, &d_eps_p_, &d_temperature_,
                           &history_rate_, &scratch_real_})
@@ -344,7 +453,7 @@ class Solver final : public GpuStepper {
   double max_speed() {
     const StateView<Real> y = view(y0_);
     Real* out = raw(scratch_real_);
-    launch("speed", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = norm(y.vel[i]); });
+    launch<kFlush>("speed", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = norm(y.vel[i]); });
     return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n_, Real(0), MaxOf{}));
   }
 
@@ -352,7 +461,7 @@ class Solver final : public GpuStepper {
     const Vec3p* x = raw(y0_.pos);
     const Vec3p* x0 = raw(pos_at_sort_);
     Real* out = raw(scratch_real_);
-    launch("displacement", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = static_cast<Real>(norm(x[i] - x0[i])); });
+    launch<kFlush>("displacement", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = static_cast<Real>(norm(x[i] - x0[i])); });
     return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n_, Real(0), MaxOf{}));
   }
 
@@ -392,7 +501,7 @@ class Solver final : public GpuStepper {
       perm_.resize(static_cast<std::size_t>(n));
       std::uint32_t* key = raw(keys_);
       const Vec3p* x = raw(y0_.pos);
-      launch("real_keys", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) { key[i] = g.key(x[i]); });
+      launch<kFlush>("real_keys", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) { key[i] = g.key(x[i]); });
       thrust::sequence(perm_.begin(), perm_.end());
       thrust::stable_sort_by_key(keys_.begin(), keys_.end(), perm_.begin());
       DVec<Vec3p> t3p; DVec<Vec3<Real>> t3; DVec<Real> t1; DVec<Sym3<Real>> ts; DVec<std::int32_t> ti;
@@ -410,7 +519,7 @@ class Solver final : public GpuStepper {
     ghost_count_.resize(static_cast<std::size_t>(n) + 1);
     std::int32_t* count = raw(ghost_count_);
     const Vec3p* x = raw(y0_.pos);
-    launch("ghost_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>("ghost_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       std::int32_t c = 0;
       Vec3p sign, shift;
       for (int m = 1; m < masks; ++m)
@@ -425,7 +534,7 @@ class Solver final : public GpuStepper {
     std::int32_t* src = raw(ghost_source_);
     Vec3p* gsign = raw(ghost_sign_);
     Vec3p* gshift = raw(ghost_shift_);
-    launch("ghost_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>("ghost_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       std::int32_t k = count[i];
       Vec3p sign, shift;
       for (int m = 1; m < masks; ++m)
@@ -440,7 +549,7 @@ class Solver final : public GpuStepper {
     const std::int64_t total = n + ghosts_;
     points_.resize(static_cast<std::size_t>(total));
     Vec3p* pts = raw(points_);
-    launch("points", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+    launch<kFlush>("points", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
       if (s < n) {
         pts[s] = x[s];
       } else {
@@ -454,20 +563,49 @@ class Solver final : public GpuStepper {
     order_.resize(static_cast<std::size_t>(total));
     slot_of_.resize(static_cast<std::size_t>(total));
     std::uint32_t* key = raw(keys_);
-    launch("point_keys", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { key[s] = g.key(pts[s]); });
+    launch<kFlush>("point_keys", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { key[s] = g.key(pts[s]); });
     thrust::sequence(order_.begin(), order_.end());
     thrust::stable_sort_by_key(keys_.begin(), keys_.end(), order_.begin());
     const std::int32_t* order = raw(order_);
     std::int32_t* slot = raw(slot_of_);
-    launch("slot_of", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { slot[order[s]] = static_cast<std::int32_t>(s); });
+    launch<kFlush>("slot_of", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { slot[order[s]] = static_cast<std::int32_t>(s); });
     // cell_start[c] = the first sorted slot whose key is >= c, for c in [0, cells].
     const std::int64_t cells = g.dims[0] * g.dims[1] * g.dims[2];
     cell_start_.resize(static_cast<std::size_t>(cells) + 1);
     std::int32_t* start = raw(cell_start_);
-    launch("cell_start", total + 1, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+    launch<kFlush>("cell_start", total + 1, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
       const std::int64_t before = s == 0 ? -1 : static_cast<std::int64_t>(key[s - 1]);
       const std::int64_t here = s == total ? cells : static_cast<std::int64_t>(key[s]);
       for (std::int64_t c = before + 1; c <= here; ++c) start[c] = static_cast<std::int32_t>(s);
+    });
+    // Verlet list of each real: the sorted slots within the search radius, gathered over the 5x5x5 cells
+    // around it (count, scan, fill: no atomics, each row in slot order).
+    sorted_points_.resize(static_cast<std::size_t>(total));
+    Vec3p* sp = raw(sorted_points_);
+    launch<kFlush>("sorted_points", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { sp[s] = pts[order[s]]; });
+    list_offset_.resize(static_cast<std::size_t>(n) + 1);
+    std::int64_t* off = raw(list_offset_);
+    const double r2 = radius_ * radius_;
+    const CellRange cr{sp, start, g};
+    launch<kFlush>("list_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const std::int64_t s = slot[i];
+      const Vec3p xs = sp[s];
+      std::int64_t c = 0;
+      cr.for_each_candidate(s, [&](std::int32_t j) {
+        if (norm2(xs - sp[j]) < r2) ++c;
+      });
+      off[i] = c;
+    });
+    thrust::exclusive_scan(list_offset_.begin(), list_offset_.end(), list_offset_.begin());
+    list_.resize(static_cast<std::size_t>(list_offset_[static_cast<std::size_t>(n)]));
+    std::int32_t* list = raw(list_);
+    launch<kFlush>("list_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const std::int64_t s = slot[i];
+      const Vec3p xs = sp[s];
+      std::int64_t k = off[i];
+      cr.for_each_candidate(s, [&](std::int32_t j) {
+        if (norm2(xs - sp[j]) < r2) list[k++] = j;
+      });
     });
     thrust::copy(y0_.pos.begin(), y0_.pos.end(), pos_at_sort_.begin());
     const std::size_t t = static_cast<std::size_t>(total);
@@ -488,32 +626,18 @@ class Solver final : public GpuStepper {
     std::int32_t *mat, *body;
     Mat3<Real>* linv;
     Vec3<Real>* grad_rho;
-    const std::int32_t* cell_start;
-    Grid grid;
+    const std::int64_t* list_offset;  // Verlet list of real i: slots list[list_offset[i] .. list_offset[i+1])
+    const std::int32_t* list;
     const PairContact<Real>* contact;
     int body_count;
     IMPACTSPH_GPU_HD const PairContact<Real>& pair(std::int32_t a, std::int32_t b) const {
       return contact[a * body_count + b];
     }
-    // Calls f(j) for every sorted slot j in the 5x5x5 cells around the cell of slot s.
-    template <class F> IMPACTSPH_GPU_HD void for_each_candidate(std::int64_t s, F&& f) const {
-      const Vec3p xs = x[s];
-      const std::int64_t cx = grid.coord(xs.x, 0), cy = grid.coord(xs.y, 1), cz = grid.coord(xs.z, 2);
-      const std::int64_t x0 = cx - 2 < 0 ? 0 : cx - 2, x1 = cx + 2 > grid.dims[0] - 1 ? grid.dims[0] - 1 : cx + 2;
-      for (std::int64_t z = (cz - 2 < 0 ? 0 : cz - 2); z <= (cz + 2 > grid.dims[2] - 1 ? grid.dims[2] - 1 : cz + 2); ++z)
-        for (std::int64_t y = (cy - 2 < 0 ? 0 : cy - 2); y <= (cy + 2 > grid.dims[1] - 1 ? grid.dims[1] - 1 : cy + 2);
-             ++y) {
-          const std::int64_t row = (z * grid.dims[1] + y) * grid.dims[0];
-          const std::int32_t first = cell_start[row + x0], last = cell_start[row + x1 + 1];
-          for (std::int32_t j = first; j < last; ++j)
-            if (j != s) f(j);
-        }
-    }
   };
   Work work() {
     return Work{raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
                 raw(wav_), raw(wA_), raw(wS_), raw(wmat_), raw(wbody_), raw(wlinv_), raw(wgrad_rho_),
-                raw(cell_start_), grid_, raw(contacts_), params_.body_count};
+                raw(list_offset_), raw(list_), raw(contacts_), params_.body_count};
   }
 
   void evaluate(StateArrays<Real>& state, double dt_in) {
@@ -537,7 +661,8 @@ class Solver final : public GpuStepper {
 
     // Work arrays in sorted order: reals from the state, ghosts as mirror images of their source. EOS
     // pressure and sound speed; a failed particle carries no deviator and no tension (F 4.2).
-    launch("gather", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+    clock_.begin();
+    launch<kFlush>("gather", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
       const std::int64_t pnt = order[s];
       const std::int64_t i = pnt < n ? pnt : gsrc[pnt - n];
       const std::int32_t mi = material[i];
@@ -562,11 +687,14 @@ class Solver final : public GpuStepper {
       w.A[s] = inv_rho2 * Sym3<Real>{S.xx - P, S.yy - P, S.zz - P, S.xy, S.yz, S.zx};
     });
 
+    clock_.end(PhaseClock::Gather);
+
     // Pass 1: correction matrix, velocity and density gradients (common/pair_terms.hpp).
+    clock_.begin();
     Mat3<Real>* grad_v = raw(grad_v_);
     std::int32_t* fell = raw(fallback_);
     std::int32_t* ncount = raw(neighbour_count_);
-    launch("pass1", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>("pass1", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const std::int64_t s = slot[i];
       const Vec3p xi = w.x[s];
       const Vec3<Real> vi = w.v[s];
@@ -574,16 +702,19 @@ class Solver final : public GpuStepper {
       const std::int32_t bi = w.body[s];
       GradientSums<Real> sums = GradientSums<Real>::zero();
       std::int32_t count = 0;
-      w.for_each_candidate(s, [&](std::int32_t j) {
-        const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
+      for (std::int64_t k = w.list_offset[i]; k < w.list_offset[i + 1]; ++k) {
+        const std::int32_t j = w.list[k];
+        const Vec3p dx = xi - w.x[j];
         const Real hij = Real(0.5) * (hi + w.h[j]);
+        if (outside_support(dx, hij)) continue;
+        const Vec3<Real> xij = cast3<Real>(dx);
         const Real r = norm(xij);
-        if (r >= kernel_support(hij)) return;
+        if (r >= kernel_support(hij)) continue;
         ++count;
-        if (w.pair(bi, w.body[j]).penalty) return;  // bodies in penalty contact do not share sums
+        if (w.pair(bi, w.body[j]).penalty) continue;  // bodies in penalty contact do not share sums
         const Vec3<Real> gw = kernel_grad_factor(prm.kernel, r, hij) * xij;
         add_gradient_pair(sums, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi);
-      });
+      }
       const CorrectedGradients<Real> cg = corrected_gradients(sums, prm.correction);
       w.linv[s] = cg.l_inverse;
       w.grad_rho[s] = cg.grad_rho;
@@ -592,7 +723,7 @@ class Solver final : public GpuStepper {
       ncount[i] = count;
       w.av[s] = prm.balsara ? balsara_factor(cg.grad_v, w.c[s], hi) : Real(1);
     });
-    launch("ghost_pass1", ghosts_, [=] IMPACTSPH_LAMBDA(std::int64_t k) {
+    launch<kFlush>("ghost_pass1", ghosts_, [=] IMPACTSPH_LAMBDA(std::int64_t k) {
       const std::int64_t s = slot[n + k], src = slot[gsrc[k]];
       const Vec3<Real> sg = cast3<Real>(gsign[k]);
       w.linv[s] = mirror(w.linv[src], sg);
@@ -601,12 +732,14 @@ class Solver final : public GpuStepper {
     });
     stats_.correction_fallbacks =
         static_cast<std::size_t>(thrust::reduce(fallback_.begin(), fallback_.begin() + n, std::int64_t(0)));
+    clock_.end(PhaseClock::Pass1);
     stats_.mean_neighbours =
         n ? static_cast<double>(thrust::reduce(neighbour_count_.begin(), neighbour_count_.begin() + n, std::int64_t(0))) /
                 static_cast<double>(n)
           : 0.0;
 
     // Stress rate (F 3.5-3.7) and pass 2: continuity with delta-SPH, momentum, energy, penalty contact.
+    clock_.begin();
     Vec3<Real>* rpos = raw(rate_pos_);
     Vec3<Real>* racc = raw(rate_acc_);
     Real* rdrho = raw(rate_drho_);
@@ -614,7 +747,7 @@ class Solver final : public GpuStepper {
     Sym3<Real>* rS = raw(rate_S_);
     Real* reps = raw(strain_rate_);
     Real* rcp = raw(contact_power_);
-    launch("pass2", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>("pass2", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const std::int64_t s = slot[i];
       const Vec3p xi = w.x[s];
       const Vec3<Real> vi = w.v[s], gri = w.grad_rho[s];
@@ -624,7 +757,8 @@ class Solver final : public GpuStepper {
       const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi};
       Vec3<Real> acc{0, 0, 0}, contact{0, 0, 0};
       Real de = 0, diffusion = 0, power = 0;
-      w.for_each_candidate(s, [&](std::int32_t j) {
+      for (std::int64_t k = w.list_offset[i]; k < w.list_offset[i + 1]; ++k) {
+        const std::int32_t j = w.list[k];
         const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
         const PairContact<Real>& pc = w.pair(bi, w.body[j]);
         if (pc.penalty) {
@@ -634,16 +768,17 @@ class Solver final : public GpuStepper {
               mat_i.strength.shear_modulus, mats[w.mat[j]].strength.shear_modulus, rhoi, w.rho[j], dt);
           contact += force;
           power += Real(0.5) * penalty_contact_energy_rate(force, vij);
-          return;
+          continue;
         }
         const Real hij = Real(0.5) * (hi + w.h[j]);
+        if (outside_support(xi - w.x[j], hij)) continue;
         const Real r = norm(xij);
-        if (r >= kernel_support(hij)) return;
+        if (r >= kernel_support(hij)) continue;
         const Vec3<Real> gw = kernel_grad_factor(prm.kernel, r, hij) * xij;
         const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j]};
         add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], acc, de);
         if (w.mat[j] == mi) diffusion += delta_sph_term(w.vol[j], rhoi, w.rho[j], xij, gri, w.grad_rho[j], gw);
-      });
+      }
       const Mat3<Real> gv = grad_v[i];
       rS[i] = deviatoric_stress_rate(mat_i, w.S[s], gv);
       reps[i] = equivalent_strain_rate(gv);
@@ -659,6 +794,7 @@ class Solver final : public GpuStepper {
         racc[i] = acc + (Real(1) / mi_mass) * contact;
       }
     });
+    clock_.end(PhaseClock::Pass2);
   }
 
   // y = y0 + dt f with the plane reflection, the density floor and the plastic return at the history
@@ -682,7 +818,7 @@ class Solver final : public GpuStepper {
     Real* h_eps = raw(d_eps_p_);
     Real* h_T = raw(d_temperature_);
     Real* h_rate = raw(history_rate_);
-    launch(record ? "advance_full" : "advance_half", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>(record ? "advance_full" : "advance_half", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const MaterialParams<Real>& m = mats[material[i]];
       Vec3p x = y0.pos[i] + dtp * cast3<double>(rpos[i]);
       Vec3<Real> v = y0.vel[i] + dt * racc[i];
@@ -716,7 +852,7 @@ class Solver final : public GpuStepper {
     const Real* h_eps = raw(d_eps_p_);
     const Real* h_T = raw(d_temperature_);
     const Real* h_rate = raw(history_rate_);
-    launch("finish_step", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>("finish_step", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       finish_step(mats[material[i]], y.rho[i], y.energy[i], y.S[i], eps_p[i], T[i], D[i], P[i], h_eps[i], h_T[i],
                   h_rate[i]);
     });
@@ -730,7 +866,7 @@ class Solver final : public GpuStepper {
     const std::int64_t n = n_;
     bad_.resize(static_cast<std::size_t>(n));
     std::int64_t* bad = raw(bad_);
-    launch("check_state", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+    launch<kFlush>("check_state", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const Vec3p x = y.pos[i];
       const Vec3<Real> v = y.vel[i];
       const Sym3<Real> S = y.S[i];
@@ -788,7 +924,9 @@ class Solver final : public GpuStepper {
   DVec<std::int32_t> ghost_count_, ghost_source_;
   DVec<Vec3p> ghost_sign_, ghost_shift_, points_;
   DVec<std::uint32_t> keys_;
-  DVec<std::int32_t> perm_, order_, slot_of_, cell_start_;
+  DVec<std::int32_t> perm_, order_, slot_of_, cell_start_, list_;
+  DVec<std::int64_t> list_offset_;
+  DVec<Vec3p> sorted_points_;
   Grid grid_{};
   // Work arrays over sorted slots.
   DVec<Vec3p> wx_;
@@ -802,6 +940,7 @@ class Solver final : public GpuStepper {
   DVec<Sym3d> out_sym_;
   DVec<double> out_scalar_;
   StepStats stats_;
+  PhaseClock clock_;
 };
 
 inline std::unique_ptr<GpuStepper> make_solver_for(const Scene& scene, Precision precision, const char* build) {

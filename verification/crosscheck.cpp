@@ -13,7 +13,9 @@
 // Observable tolerances (float runs): --wave-tol on the elastic-wave front speed and stress amplitude,
 // --length-tol on the Taylor bar final length, --residual-tol on the plate residual velocity.
 #include <omp.h>
+#include <time.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -123,6 +125,14 @@ struct Check {
   }
 };
 
+// CPU seconds of all threads of this process: on a shared machine the wall time of a step also counts
+// the time other programs held the cores (run with OMP_WAIT_POLICY=passive so that waiting threads sleep).
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 double rel(double a, double b) { return b != 0 ? std::abs(a - b) / std::abs(b) : std::abs(a - b); }
 
 // Elastic-wave measurements (as verification/analytic_elastic_wave.cpp): the front of half the particle
@@ -202,14 +212,24 @@ int main(int argc, char** argv) {
 
     Wave wave_a, wave_b;
     double next_wave = 4e-6;
-    double t = 0, contact_a = 0, contact_b = 0;
+    double t = 0, contact_a = 0, contact_b = 0, wall_ref = 0, wall_port = 0, cpu_ref = 0, cpu_port = 0;
     long step = 0;
     const long every = args.every > 0 ? args.every : (args.to_end ? 50 : 10);
     while (args.to_end ? t < end * (1 - 1e-12) : step < args.steps) {
       double dt = ref.stable_time_step(b);
       if (args.to_end) dt = std::min(dt, end - t);
+      const auto t0 = std::chrono::steady_clock::now();
+      const double c0 = process_cpu_seconds();
       ref.step(b, dt);
+      const auto t1 = std::chrono::steady_clock::now();
+      const double c1 = process_cpu_seconds();
       port->step(a, dt);
+      const auto t2 = std::chrono::steady_clock::now();
+      const double c2 = process_cpu_seconds();
+      wall_ref += std::chrono::duration<double>(t1 - t0).count();
+      wall_port += std::chrono::duration<double>(t2 - t1).count();
+      cpu_ref += c1 - c0;
+      cpu_port += c2 - c1;
       t += dt;
       ++step;
       contact_b += ref.last_stats().contact_work;
@@ -258,6 +278,12 @@ int main(int argc, char** argv) {
       check.row("elastic wave speed", rel(wave_a.speed, wave_b.speed), args.wave_tol);
       check.row("elastic wave stress amplitude", rel(wave_a.stress, wave_b.stress), args.wave_tol);
     }
+    std::printf("\nwall time of the steps: reference %.3f s (%.3g particle-steps/s), gpu port %.3f s (%.3g "
+                "particle-steps/s, %ld sorts); ratio %.2f\n",
+                wall_ref, double(n) * double(step) / wall_ref, wall_port, double(n) * double(step) / wall_port,
+                port->sorts(), wall_ref / wall_port);
+    std::printf("cpu time of the steps (all threads): reference %.3f s, gpu port %.3f s; ratio %.2f\n", cpu_ref,
+                cpu_port, cpu_ref / cpu_port);
     std::printf("\n%s: %d tolerance%s failed\n", check.failures ? "FAIL" : "PASS", check.failures,
                 check.failures == 1 ? "" : "s");
     return check.failures ? 1 : 0;
