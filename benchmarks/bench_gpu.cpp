@@ -4,9 +4,12 @@
 // Counters: particle_steps_per_s (particles x steps / s; for a phase, particles x calls / s of that
 // phase), neighbours (mean within the kernel support), threads.
 // Run:  OMP_NUM_THREADS=2 ./build/bench_gpu --benchmark_counters_tabular=true
-// Compare BM_GpuHostStep/103823 with BM_Step/103823 of bench_reference at the same OMP_NUM_THREADS.
+// BM_ReferenceStep is bench_reference's BM_Step, here so that one run gives the ratio. On a shared machine
+// set OMP_WAIT_POLICY=passive and compare the cpu_s_per_step counters (CPU time of all threads) as well
+// as the wall time.
 #include <benchmark/benchmark.h>
 #include <omp.h>
+#include <time.h>
 
 #include <cmath>
 #include <sstream>
@@ -14,6 +17,7 @@
 #include "common/case_file.hpp"
 #include "common/scene.hpp"
 #include "gpu/solver.hpp"
+#include "reference/solver.hpp"
 
 namespace {
 
@@ -39,7 +43,15 @@ Scene block(int n) {
 
 int side(const benchmark::State& state) { return static_cast<int>(std::lround(std::cbrt(double(state.range(0))))); }
 
-void set_counters(benchmark::State& state, std::size_t particles, double neighbours) {
+// CPU seconds of all threads of the process.
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+void set_counters(benchmark::State& state, std::size_t particles, double neighbours, double cpu_seconds) {
+  state.counters["cpu_s_per_step"] = state.iterations() ? cpu_seconds / double(state.iterations()) : 0.0;
   state.counters["particle_steps_per_s"] =
       benchmark::Counter(double(particles) * double(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["neighbours"] = neighbours;
@@ -57,13 +69,26 @@ void BM_GpuHostStep(benchmark::State& state) {
   // moved half the skin (about every 5-10 steps in an impact, never in this nearly still block).
   solver->step(scene.particles, solver->stable_time_step(scene.particles));
   solver->profile_phases(state.range(1) != 0);
+  const double cpu0 = process_cpu_seconds();
   for (auto _ : state) {
     const double dt = solver->stable_time_step(scene.particles);
     solver->step(scene.particles, dt);
   }
   for (const gpu::PhaseTime& t : solver->phase_times())
     if (t.calls > 0) state.counters[t.name + "_s_per_call"] = t.seconds / double(t.calls);
-  set_counters(state, scene.particles.size(), solver->last_stats().mean_neighbours);
+  set_counters(state, scene.particles.size(), solver->last_stats().mean_neighbours, process_cpu_seconds() - cpu0);
+}
+
+// The reference's whole step on the same block (as BM_Step of bench_reference), for the ratio in one run.
+void BM_ReferenceStep(benchmark::State& state) {
+  Scene scene = block(side(state));
+  reference::ReferenceSolver solver(scene);
+  const double cpu0 = process_cpu_seconds();
+  for (auto _ : state) {
+    const double dt = solver.stable_time_step(scene.particles);
+    solver.step(scene.particles, dt);
+  }
+  set_counters(state, scene.particles.size(), solver.last_stats().mean_neighbours, process_cpu_seconds() - cpu0);
 }
 
 // Phases of a CUDA step (sort and lists, gather, pass 1, pass 2, advance, finish), timed with CUDA events.
@@ -78,6 +103,7 @@ void BM_CudaPhases(benchmark::State& state) {
   solver->defer_host_copies(true);
   solver->step(scene.particles, solver->stable_time_step(scene.particles));
   solver->profile_phases(true);
+  const double cpu0 = process_cpu_seconds();
   for (auto _ : state) {
     const double dt = solver->stable_time_step(scene.particles);
     solver->step(scene.particles, dt);
@@ -85,9 +111,10 @@ void BM_CudaPhases(benchmark::State& state) {
   for (const gpu::PhaseTime& t : solver->phase_times())
     state.counters[t.name + "_particle_steps_per_s"] =
         t.seconds > 0 ? double(scene.particles.size()) * double(t.calls) / t.seconds : 0.0;
-  set_counters(state, scene.particles.size(), solver->last_stats().mean_neighbours);
+  set_counters(state, scene.particles.size(), solver->last_stats().mean_neighbours, process_cpu_seconds() - cpu0);
 }
 
+BENCHMARK(BM_ReferenceStep)->Args({8000, 0})->Args({103823, 0})->Unit(benchmark::kMillisecond)->UseRealTime();
 // Second argument 1: also time the phases (host clock), reported as <phase>_s_per_call.
 BENCHMARK_TEMPLATE(BM_GpuHostStep, gpu::Precision::Float)
     ->Args({8000, 0})->Args({103823, 0})->Args({103823, 1})->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -328,8 +328,16 @@ class Solver final : public GpuStepper {
     return static_cast<double>(dt);
   }
 
+  // Also marks the particles for a sort before the next step: a run restarted from what the host now holds
+  // starts with a sort of the same state, so both continue with the same order and the same bits.
   void copy_to_host(ParticleSet& p) override {
     if (!resident_) return;
+    sorted_ = false;
+    download(p);
+  }
+
+  // The device state into p, in the scene's order.
+  void download(ParticleSet& p) {
     const std::int64_t n = n_;
     const StateView<Real> y = view(y0_);
     const std::int32_t* orig = raw(original_);
@@ -381,7 +389,7 @@ class Solver final : public GpuStepper {
         dt * static_cast<double>(thrust::reduce(contact_power_.begin(), contact_power_.begin() + n, Real(0)));
     std::swap(y0_, y1_);
     clock_.time(PhaseClock::Finish, [&] { finish(); });
-    if (!defer_) copy_to_host(p);
+    if (!defer_) download(p);
   }
 
  // The rest is public only because nvcc's extended (device) lambdas may not live in private members.
@@ -496,14 +504,19 @@ class Solver final : public GpuStepper {
     ++sorts_;
     const double cell = 0.5 * radius_;
     {
+      // Key (cell, index in the scene): the order depends on the positions only, not on the order before,
+      // so a run restarted from a checkpoint sorts exactly as the run that wrote it (copy_to_host).
       const Grid g = grid_of(y0_.pos, static_cast<std::size_t>(n), cell);
-      keys_.resize(static_cast<std::size_t>(n));
+      real_keys_.resize(static_cast<std::size_t>(n));
       perm_.resize(static_cast<std::size_t>(n));
-      std::uint32_t* key = raw(keys_);
+      std::uint64_t* key = raw(real_keys_);
       const Vec3p* x = raw(y0_.pos);
-      launch<kFlush>("real_keys", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) { key[i] = g.key(x[i]); });
+      const std::int32_t* orig = raw(original_);
+      launch<kFlush>("real_keys", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+        key[i] = (static_cast<std::uint64_t>(g.key(x[i])) << 32) | static_cast<std::uint32_t>(orig[i]);
+      });
       thrust::sequence(perm_.begin(), perm_.end());
-      thrust::stable_sort_by_key(keys_.begin(), keys_.end(), perm_.begin());
+      thrust::sort_by_key(real_keys_.begin(), real_keys_.end(), perm_.begin());
       DVec<Vec3p> t3p; DVec<Vec3<Real>> t3; DVec<Real> t1; DVec<Sym3<Real>> ts; DVec<std::int32_t> ti;
       DVec<std::uint8_t> tb;
       permute(y0_.pos, t3p); permute(y0_.vel, t3); permute(y0_.rho, t1); permute(y0_.energy, t1); permute(y0_.S, ts);
@@ -924,6 +937,7 @@ class Solver final : public GpuStepper {
   DVec<std::int32_t> ghost_count_, ghost_source_;
   DVec<Vec3p> ghost_sign_, ghost_shift_, points_;
   DVec<std::uint32_t> keys_;
+  DVec<std::uint64_t> real_keys_;
   DVec<std::int32_t> perm_, order_, slot_of_, cell_start_, list_;
   DVec<std::int64_t> list_offset_;
   DVec<Vec3p> sorted_points_;

@@ -3,7 +3,9 @@
 // fields are compared at matched times. Prints a table and exits 1 when a tolerance fails.
 //
 //   crosscheck CASE [--spacing X] [--set key=value ...] [--precision double|float] [--steps N | --to-end]
-//              [--every K] [--field-tol R] [--wave-tol R] [--length-tol R] [--residual-tol R]
+//              [--every K] [--field-tol R] [--wave-tol R] [--length-tol R] [--residual-tol R] [--build host|cuda]
+// --build cuda checks the CUDA build instead of the host build; with no CUDA device it exits with 77
+// (CTest: skipped).
 //
 // Field differences, at every K-th step and at the last: for displacement u = x - x_0 (m), velocity
 // (m/s), density (kg/m^3) and stress sigma = S - P I (Pa, six components), the relative L2 difference
@@ -38,6 +40,7 @@ struct Args {
   std::string case_file, spacing;
   std::vector<std::string> sets;
   gpu::Precision precision = gpu::Precision::Double;
+  bool cuda = false;
   long steps = 100;
   bool to_end = false;
   long every = 0;
@@ -70,6 +73,12 @@ Args parse(int argc, char** argv) {
       else usage("--precision takes double or float");
     } else if (s == "--steps") a.steps = std::stol(value());
     else if (s == "--to-end") a.to_end = true;
+    else if (s == "--build") {
+      const std::string b = value();
+      if (b == "host") a.cuda = false;
+      else if (b == "cuda") a.cuda = true;
+      else usage("--build takes host or cuda");
+    }
     else if (s == "--every") a.every = std::stol(value());
     else if (s == "--field-tol") a.field_tol = std::stod(value());
     else if (s == "--wave-tol") a.wave_tol = std::stod(value());
@@ -170,12 +179,17 @@ void wave_finish(Wave& w, const ParticleSet& p, double dx) {
 
 int main(int argc, char** argv) {
   const Args args = parse(argc, argv);
+  if (args.cuda && gpu::cuda::device_count() == 0) {
+    std::printf("skipped: no CUDA device%s\n", gpu::cuda_built() ? "" : " (built without CUDA)");
+    return 77;
+  }
   try {
     Scene ref_scene = build_scene(load_case_file(args.case_file, args.sets, args.spacing));
     Scene gpu_scene = ref_scene;
     const std::vector<Vec3d> x0 = ref_scene.particles.pos;
     reference::ReferenceSolver ref(ref_scene);
-    std::unique_ptr<gpu::GpuStepper> port = gpu::host::make_solver(gpu_scene, args.precision);
+    std::unique_ptr<gpu::GpuStepper> port = args.cuda ? gpu::cuda::make_solver(gpu_scene, args.precision)
+                                                      : gpu::host::make_solver(gpu_scene, args.precision);
     ParticleSet& a = gpu_scene.particles;
     ParticleSet& b = ref_scene.particles;
     const std::size_t n = b.size();
