@@ -1,5 +1,6 @@
 // impactsph: the command line of ImpactSPH.
 //   impactsph run CASE.toml [--out DIR] [--threads N] [--spacing X] [--set key=value ...] [--quiet]
+//                 [--backend reference|gpu] [--precision double|float]
 //   impactsph run --restart DIR
 //   impactsph check CASE.toml [--spacing X] [--set key=value ...]
 //   impactsph ballistic-limit CASE.toml --from V1 --to V2 [--tolerance DV] [--jobs N] [--out DIR] ...
@@ -20,6 +21,7 @@
 #include "common/output.hpp"
 #include "common/scene.hpp"
 #include "common/units.hpp"
+#include "gpu/solver.hpp"
 #include "reference/solver.hpp"
 
 namespace fs = std::filesystem;
@@ -91,8 +93,24 @@ Scene load_scene(const CaseArgs& a) {
   return build_scene(spec);
 }
 
+// The solver of --backend and --precision: the reference (double only) or the gpu port, which runs its
+// host build on a machine without a CUDA device and says so in one line.
+std::unique_ptr<Stepper> make_stepper(const Scene& scene, const std::string& backend, const std::string& precision) {
+  if (backend == "reference") {
+    if (precision != "double")
+      throw std::runtime_error("--precision " + precision + ": the reference solver runs in double only (use --backend gpu)");
+    return std::make_unique<reference::ReferenceSolver>(scene);
+  }
+  std::string note;
+  std::unique_ptr<gpu::GpuStepper> s =
+      gpu::make_solver(scene, precision == "float" ? gpu::Precision::Float : gpu::Precision::Double, &note);
+  if (!note.empty()) std::fprintf(stderr, "note: %s\n", note.c_str());
+  s->defer_host_copies(true);  // the driver calls copy_to_host before it reads the particles
+  return s;
+}
+
 int run_command(CaseArgs args, std::string out, int threads, bool quiet, const std::string& restart_dir,
-                const std::vector<std::string>& argv_all) {
+                const std::vector<std::string>& argv_all, std::string backend, std::string precision) {
   if (!restart_dir.empty()) {
     const fs::path run_json = fs::path(restart_dir) / "run.json";
     std::ifstream in(run_json);
@@ -106,7 +124,11 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
     }
     out = restart_dir;
     if (threads <= 0) threads = j.value("threads", 0);
+    if (backend.empty()) backend = j.value("backend", "reference");
+    if (precision.empty()) precision = j.value("precision", "double");
   }
+  if (backend.empty()) backend = "reference";
+  if (precision.empty()) precision = "double";
   if (args.case_file.empty()) throw std::runtime_error("run needs a case file (impactsph run CASE.toml) or --restart DIR");
   if (threads > 0) omp_set_num_threads(threads);
   threads = omp_get_max_threads();
@@ -123,17 +145,18 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   fs::create_directories(opt.out_dir);
   if (!opt.restart) {
     nlohmann::json j{{"case_file", fs::absolute(args.case_file).string()}, {"spacing", args.spacing}, {"set", args.sets},
-                     {"threads", threads}};
+                     {"threads", threads}, {"backend", backend}, {"precision", precision}};
     write_text_atomic(opt.out_dir / "run.json", j.dump(2) + "\n");
   }
 
-  reference::ReferenceSolver solver(scene);
+  const std::unique_ptr<Stepper> solver = make_stepper(scene, backend, precision);
   if (!quiet) {
-    std::printf("ImpactSPH: %s, %zu particles, %d threads, output in %s%s\n", scene.spec.name.c_str(),
-                scene.particles.size(), threads, opt.out_dir.string().c_str(), opt.restart ? " (restart)" : "");
+    std::printf("ImpactSPH: %s, %zu particles, %d threads, %s, output in %s%s\n", scene.spec.name.c_str(),
+                scene.particles.size(), threads, solver->name().c_str(), opt.out_dir.string().c_str(),
+                opt.restart ? " (restart)" : "");
     std::fflush(stdout);
   }
-  const RunResult r = run_simulation(scene, solver, opt);
+  const RunResult r = run_simulation(scene, *solver, opt);
   if (r.interrupted) {
     std::printf("stopped at t = %.6g us (step %lld); checkpoint written. Continue with:\n  impactsph run --restart %s\n",
                 r.clock.time * 1e6, static_cast<long long>(r.clock.step), opt.out_dir.string().c_str());
@@ -190,7 +213,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   CaseArgs run_args, check_args;
-  std::string out, restart_dir;
+  std::string out, restart_dir, backend, precision;
   int threads = 0;
   bool quiet = false;
   auto add_case_options = [](CLI::App* sub, CaseArgs& a) {
@@ -205,6 +228,10 @@ int main(int argc, char** argv) {
   run->add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   run->add_flag("--quiet,-q", quiet, "no banner and no progress line");
   run->add_option("--restart", restart_dir, "continue the run whose output folder is DIR from its last checkpoint");
+  run->add_option("--backend", backend, "solver: reference (default) or gpu (the CUDA port; its host build without a GPU)")
+      ->check(CLI::IsMember({"reference", "gpu"}));
+  run->add_option("--precision", precision, "double (default) or float (gpu backend only)")
+      ->check(CLI::IsMember({"double", "float"}));
   add_case_options(run, run_args);
   CLI::App* check = app.add_subcommand("check", "validate a case file and print the scene it builds");
   check->add_option("case", check_args.case_file, "case file (TOML)")->required()->check(CLI::ExistingFile);
@@ -234,7 +261,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
-    if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all);
+    if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all, backend, precision);
     if (*ballistic) {
       ballistic_opt.case_file = ballistic_args.case_file;
       ballistic_opt.spacing = ballistic_args.spacing;

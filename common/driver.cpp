@@ -201,7 +201,10 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
 
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
   auto observe = [&](bool force) {
-    if (force || clock.time >= clock.next_output - time_eps) {
+    const bool row = force || clock.time >= clock.next_output - time_eps;
+    const bool frame = scene.spec.output.vtu && (force || clock.time >= clock.next_frame - time_eps);
+    if (row || frame) stepper.copy_to_host(p);
+    if (row) {
       if (ts.output_interval > 0)
         while (clock.next_output <= clock.time + time_eps) clock.next_output += ts.output_interval;
       const Totals totals = summarise_totals(p);
@@ -218,13 +221,14 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
       if (scene.spec.observables.projectile_index >= 0)
         track_settling(scene.spec.observables, clock.time, measure_observables(scene, p).residual_velocity, clock);
     }
-    if (scene.spec.output.vtu && (force || clock.time >= clock.next_frame - time_eps)) {
+    if (frame) {
       while (clock.next_frame <= clock.time + time_eps) clock.next_frame += frame_interval;
       frames.write_frame(clock.time, clock.frame, p, scene.materials);
       ++clock.frame;
     }
   };
   auto save = [&] {
+    stepper.copy_to_host(p);
     clock.wall_seconds = wall_before + elapsed();
     write_checkpoint(checkpoint_path(opt.out_dir), p, clock, opt.fingerprint);
   };
@@ -275,6 +279,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
   } catch (const DivergenceError&) {
     if (progress) std::fprintf(stderr, "\n");
     // p still holds the last good state: keep it for inspection and restart.
+    stepper.copy_to_host(p);
     frames.write_frame(clock.time, clock.frame, p, scene.materials);
     ++clock.frame;
     save();

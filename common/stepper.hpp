@@ -23,6 +23,9 @@ class Stepper {
   // Advances p by dt. On divergence throws DivergenceError and leaves p at its state before the step.
   virtual void step(ParticleSet& p, double dt) = 0;
   virtual StepStats last_stats() const = 0;
+  // Brings p up to date when the solver keeps the particles elsewhere between steps (the gpu port, in
+  // device memory); the driver calls it before it reads them. The reference updates p in every step.
+  virtual void copy_to_host(ParticleSet&) {}
 };
 
 }  // namespace impactsph

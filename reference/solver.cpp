@@ -8,8 +8,10 @@
 #include "common/correction.hpp"
 #include "common/damage.hpp"
 #include "common/delta_sph.hpp"
+#include "common/integration.hpp"
 #include "common/errors.hpp"
 #include "common/kernels.hpp"
+#include "common/pair_terms.hpp"
 #include "common/material.hpp"
 #include "common/timestep.hpp"
 #include "common/viscosity.hpp"
@@ -18,19 +20,6 @@ namespace impactsph::reference {
 
 namespace {
 
-// Lowest density a particle may reach, as a fraction of its material's reference density.
-constexpr double kMinDensityRatio = 0.5;
-
-Vec3d hadamard(Vec3d a, Vec3d b) { return {a.x * b.x, a.y * b.y, a.z * b.z}; }
-
-// Mirror image of a symmetric tensor under x'_a = sign_a x_a: T'_ab = sign_a sign_b T_ab.
-Sym3d mirror(Sym3d t, Vec3d s) { return {t.xx, t.yy, t.zz, s.x * s.y * t.xy, s.y * s.z * t.yz, s.z * s.x * t.zx}; }
-Mat3d mirror(const Mat3d& t, Vec3d s) {
-  Mat3d r;
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) r.m[a][b] = s[a] * s[b] * t.m[a][b];
-  return r;
-}
 bool finite(Vec3d v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 bool finite(Sym3d s) {
   return std::isfinite(s.xx) && std::isfinite(s.yy) && std::isfinite(s.zz) && std::isfinite(s.xy) && std::isfinite(s.yz) &&
@@ -138,8 +127,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   std::size_t fallbacks = 0;
 #pragma omp parallel for schedule(static) reduction(+ : fallbacks)
   for (std::int64_t i = 0; i < ni; ++i) {
-    Mat3d L = Mat3d::zero(), G = Mat3d::zero();
-    Vec3d gr{0, 0, 0};
+    GradientSums<double> sums = GradientSums<double>::zero();
     const Vec3d xi = x_[i], vi = v_[i];
     const double rhoi = rho_[i], hi = hh_[i];
     const std::int32_t bi = bb_[i];
@@ -151,17 +139,13 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       const double r = norm(xij);
       if (r >= kernel_support(hij)) continue;
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      const double vj = volume_[j];
-      accumulate_correction(L, vj, gw, xij);
-      G = G + vj * outer(v_[j] - vi, gw);
-      gr += (vj * (rho_[j] - rhoi)) * gw;
+      add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi);
     }
-    bool fell_back = false;
-    const Mat3d Linv = correction_inverse(L, numerics_.correction, fell_back);
-    if (fell_back) ++fallbacks;
-    l_inverse_[i] = Linv;
-    grad_v_[i] = G * Linv.transpose();  // sum V_j (v_j - v_i) (x) L^-1 grad W
-    grad_rho_[i] = Linv * gr;
+    const CorrectedGradients<double> cg = corrected_gradients(sums, numerics_.correction);
+    if (cg.fell_back) ++fallbacks;
+    l_inverse_[i] = cg.l_inverse;
+    grad_v_[i] = cg.grad_v;
+    grad_rho_[i] = cg.grad_rho;
   }
   stats_.correction_fallbacks = fallbacks;
   // Viscosity factor per particle: 1, or the Balsara shear limiter of its velocity gradient.
@@ -194,11 +178,9 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < ni; ++i) {
     const Vec3d xi = x_[i], vi = v_[i], gri = grad_rho_[i];
-    const double rhoi = rho_[i], hi = hh_[i], ci = sound_speed_[i];
+    const double rhoi = rho_[i], hi = hh_[i];
     const std::int32_t mi = mat_[i], bi = bb_[i];
-    const double Di = damage_all_[i];
-    const Mat3d Ai = s_over_rho2_[i].full();
-    const Mat3d Linv_i = l_inverse_[i];
+    const PairSide<double> side_i = pair_side(i);
     Vec3d acc{0, 0, 0}, contact{0, 0, 0};
     double de = 0, diffusion = 0, contact_power = 0;
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
@@ -220,19 +202,11 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       const double r = norm(xij);
       if (r >= kernel_support(hij)) continue;
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      const Vec3d gt = (0.5 * damaged_pair_factor(Di, damage_all_[j])) * ((Linv_i + l_inverse_[j]) * gw);
-      const Vec3d vij = vi - v_[j];
-      const double pi_ij = 0.5 * (av_factor_[i] + av_factor_[j]) *
-                           monaghan_viscosity(visc, xij, vij, hij, 0.5 * (ci + sound_speed_[j]), 0.5 * (rhoi + rho_[j]));
-      Mat3d T = Ai + s_over_rho2_[j].full();
-      T.m[0][0] -= pi_ij; T.m[1][1] -= pi_ij; T.m[2][2] -= pi_ij;
-      const Vec3d tg = T * gt;
-      acc += m_[j] * tg;
-      de -= 0.5 * m_[j] * dot(vij, tg);  // (v_j - v_i) . T gt
+      add_momentum_energy_pair(side_i, pair_side(j), visc, gw, xij, vi - v_[j], hij, m_[j], acc, de);
       if (mat_[j] == mi) diffusion += delta_sph_term(volume_[j], rhoi, rho_[j], xij, gri, grad_rho_[j], gw);
     }
     const double c0 = std::sqrt(eos_reference_sound_speed2(materials_[static_cast<std::size_t>(mi)].eos));
-    f.drho[i] = -rhoi * grad_v_[i].trace() + delta * hi * c0 * diffusion;
+    f.drho[i] = continuity_rate(rhoi, grad_v_[i], delta, hi, c0, diffusion);
     f.denergy[i] = de;
     f.contact_power[i] = contact_power;
     if (fixed_[i]) {
@@ -243,6 +217,10 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       f.acc[i] = acc + (1.0 / m_[i]) * contact;
     }
   }
+}
+
+PairSide<double> ReferenceSolver::pair_side(std::size_t i) const {
+  return {s_over_rho2_[i].full(), l_inverse_[i], damage_all_[i], av_factor_[i], sound_speed_[i], rho_[i]};
 }
 
 void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {
@@ -257,20 +235,9 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
   for (std::int64_t i = 0; i < n; ++i) {
     out.pos[i] = y0.pos[i] + dt * f.vel[i];
     out.vel[i] = y0.vel[i] + dt * f.acc[i];
-    // A symmetry plane is also a frictionless wall: a particle that crossed it is reflected back, with
-    // its normal velocity reversed (its mirror image crossed the other way).
-    for (std::size_t k = 0; k < symmetry_.size(); ++k) {
-      const int a = symmetry_[k].axis;
-      const double c = symmetry_[k].position;
-      if ((out.pos[i][a] - c) * plane_side_[k] < 0) {
-        out.pos[i][a] = 2 * c - out.pos[i][a];
-        out.vel[i][a] = -out.vel[i][a];
-      }
-    }
-    // Density floor: a solid torn apart does not rarefy below a fraction of its reference density; the
-    // explicit continuity update can overshoot for a lone pair of separating fragments.
-    const double rho_floor = kMinDensityRatio * materials_[static_cast<std::size_t>(material_[i])].eos.rho0;
-    out.rho[i] = std::max(rho_floor, y0.rho[i] + dt * f.drho[i]);
+    for (std::size_t k = 0; k < symmetry_.size(); ++k)
+      reflect_at_plane(out.pos[i], out.vel[i], symmetry_[k].axis, symmetry_[k].position, plane_side_[k]);
+    out.rho[i] = advance_density(materials_[static_cast<std::size_t>(material_[i])], y0.rho[i], f.drho[i], dt);
     out.energy[i] = y0.energy[i] + dt * f.denergy[i];
     // Trial stress, then the plastic return at the history variables of the step start.
     Sym3d s = y0.dev_stress[i] + dt * f.dstress[i];
@@ -363,16 +330,8 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
     const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
-    p.plastic_strain[i] += history.d_eps_p[i];
-    p.temperature[i] += history.d_temperature[i];
-    double c = 0;
-    p.pressure[i] = eos_pressure(mat.eos, p.rho[i], p.energy[i], c);
-    if (p.damage[i] < 1.0) {
-      const double dd = damage_increment(mat, history.d_eps_p[i], p.plastic_strain[i], p.pressure[i],
-                                         von_mises(p.dev_stress[i]), history.strain_rate[i], p.temperature[i]);
-      p.damage[i] = std::min(1.0, p.damage[i] + dd);
-    }
-    apply_failure(p.dev_stress[i], p.pressure[i], p.damage[i]);
+    finish_step(mat, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i], p.temperature[i], p.damage[i],
+                p.pressure[i], history.d_eps_p[i], history.d_temperature[i], history.strain_rate[i]);
   }
 }
 

@@ -13,6 +13,7 @@
 #pragma once
 #include <vector>
 
+#include "common/pair_terms.hpp"
 #include "common/scene.hpp"
 #include "common/stepper.hpp"
 #include "reference/neighbours.hpp"
@@ -65,6 +66,8 @@ class ReferenceSolver final : public Stepper {
     return contact_of_pair_[static_cast<std::size_t>(body_a) * body_count_ + static_cast<std::size_t>(body_b)];
   }
   void check_state(const State& y, double dt) const;
+  // What particle or ghost i brings to the pair terms of pass 2.
+  PairSide<double> pair_side(std::size_t i) const;
 
   NumericsSpec numerics_;
   std::vector<SymmetryPlaneSpec> symmetry_;

@@ -1,0 +1,91 @@
+// The per-pair terms of the two SPH passes, written once for both solvers (design.md, "physics is written
+// once"). Each function adds neighbour j's contribution to the sums of particle i; the loops around them
+// (neighbour lists in the reference, cell gathers in the gpu port) belong to the solvers.
+// Notation: x_ij = x_i - x_j (m), v_ij = v_i - v_j (m/s), V_j = m_j / rho_j (m^3), gw = grad_i W_ij (1/m^4).
+#pragma once
+#include "common/correction.hpp"
+#include "common/damage.hpp"
+#include "common/delta_sph.hpp"
+#include "common/viscosity.hpp"
+
+namespace impactsph {
+
+// Pass 1 sums of particle i (F 2.13, F 2.19).
+template <class Real>
+struct GradientSums {
+  Mat3<Real> L;      // correction matrix -sum V_j gw (x) x_ij, dimensionless
+  Mat3<Real> G;      // uncorrected velocity gradient sum V_j (v_j - v_i) (x) gw, 1/s
+  Vec3<Real> grad_rho;  // uncorrected density gradient sum V_j (rho_j - rho_i) gw, kg/m^4
+  IMPACTSPH_HD static GradientSums zero() {
+    return {Mat3<Real>::zero(), Mat3<Real>::zero(), Vec3<Real>{Real(0), Real(0), Real(0)}};
+  }
+};
+
+// Neighbour j's share of the pass 1 sums: v_ji = v_j - v_i, drho_ji = rho_j - rho_i.
+template <class Real>
+IMPACTSPH_HD void add_gradient_pair(GradientSums<Real>& s, Real vol_j, Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> v_ji,
+                                    Real drho_ji) {
+  accumulate_correction(s.L, vol_j, gw, xij);
+  s.G = s.G + vol_j * outer(v_ji, gw);
+  s.grad_rho += (vol_j * drho_ji) * gw;
+}
+
+// Pass 1 result: L^-1 (or the identity on fallback), the corrected velocity gradient
+// grad v = sum V_j (v_j - v_i) (x) L^-1 gw (1/s) and the renormalised density gradient L^-1 sum (kg/m^4).
+template <class Real>
+struct CorrectedGradients {
+  Mat3<Real> l_inverse;
+  Mat3<Real> grad_v;
+  Vec3<Real> grad_rho;
+  bool fell_back;
+};
+template <class Real>
+IMPACTSPH_HD CorrectedGradients<Real> corrected_gradients(const GradientSums<Real>& s, const CorrectionParams<Real>& p) {
+  CorrectedGradients<Real> r;
+  r.l_inverse = correction_inverse(s.L, p, r.fell_back);
+  r.grad_v = s.G * r.l_inverse.transpose();
+  r.grad_rho = r.l_inverse * s.grad_rho;
+  return r;
+}
+
+// What particle i carries into the pair sums of pass 2.
+template <class Real>
+struct PairSide {
+  Mat3<Real> A;          // (S - P I) / rho^2, m^5 kg^-1 s^-2
+  Mat3<Real> l_inverse;  // correction L^-1
+  Real damage;           // D, dimensionless
+  Real av_factor;        // viscosity factor (1, or Balsara's)
+  Real sound_speed;      // m/s
+  Real rho;              // kg/m^3
+};
+
+// Neighbour j's share of the momentum (F 2.11) and energy (consistent F 2.12) rates of i, with the
+// symmetrised corrected gradient gt = (1 - D_ij)(L_i^-1 + L_j^-1)/2 gw (F 2.14, F 4.10) and the Monaghan
+// viscosity Pi_ij (F 2.16-2.17, scaled by the pair mean of the Balsara factors):
+//   dv_i/dt += m_j (A_i + A_j - Pi_ij I) gt   (m/s^2),
+//   de_i/dt -= m_j/2 v_ij . (A_i + A_j - Pi_ij I) gt   (J/kg/s).
+// h_ij is the pair smoothing length (m), m_j the mass of j (kg).
+template <class Real>
+IMPACTSPH_HD void add_momentum_energy_pair(const PairSide<Real>& i, const PairSide<Real>& j, const ViscosityParams<Real>& visc,
+                                           Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> vij, Real hij, Real m_j,
+                                           Vec3<Real>& acc, Real& de) {
+  const Vec3<Real> gt = (Real(0.5) * damaged_pair_factor(i.damage, j.damage)) * ((i.l_inverse + j.l_inverse) * gw);
+  const Real pi_ij = Real(0.5) * (i.av_factor + j.av_factor) *
+                     monaghan_viscosity(visc, xij, vij, hij, Real(0.5) * (i.sound_speed + j.sound_speed),
+                                        Real(0.5) * (i.rho + j.rho));
+  Mat3<Real> T = i.A + j.A;
+  T.m[0][0] -= pi_ij; T.m[1][1] -= pi_ij; T.m[2][2] -= pi_ij;
+  const Vec3<Real> tg = T * gt;
+  acc += m_j * tg;
+  de -= Real(0.5) * m_j * dot(vij, tg);  // (v_j - v_i) . T gt
+}
+
+// Continuity with delta-SPH (Marrone form, delta_sph.hpp): drho_i/dt = -rho_i tr(grad v_i) + delta h_i c0 D_i
+// (kg/m^3/s), D_i the sum of delta_sph_term over neighbours of the same material, c0 the reference sound
+// speed of i's material (m/s).
+template <class Real>
+IMPACTSPH_HD Real continuity_rate(Real rho_i, const Mat3<Real>& grad_v, Real delta, Real h_i, Real c0, Real diffusion) {
+  return -rho_i * grad_v.trace() + delta * h_i * c0 * diffusion;
+}
+
+}  // namespace impactsph

@@ -1,0 +1,965 @@
+// The gpu solver, written once for both builds: solver_host.cpp includes it with
+// IMPACTSPH_GPU_BACKEND = host (OpenMP loops, Thrust OMP system), solver_cuda.cu with cuda (kernels,
+// Thrust CUDA system: radix sort, scans and reductions on the device).
+//
+// A step is the reference's (reference/solver.hpp): explicit midpoint, each evaluation = mirror ghosts,
+// EOS, pass 1, stress rate, pass 2; every formula is a common/ function. What differs is the loop shape:
+//   * storage: structure of arrays in device memory, one array per field; the real particles are kept in
+//     the order of their cells (re-sorted when they have moved enough), and `original` maps back;
+//   * neighbours: all points (reals and symmetry ghosts) sorted by cell key (stable radix sort), cell
+//     ranges cell_start[c] .. cell_start[c+1]; at each sort one thread per particle gathers over the 5x5x5
+//     cells of half the search radius around its own into its Verlet list (count, scan, fill);
+//   * each evaluation gathers the fields into work arrays in the sorted order, and every pass is one
+//     thread per particle summing over its list (no atomics: each thread owns its sums, in a fixed order);
+//   * the sort and the lists are kept while no particle can have moved half the skin (Verlet criterion),
+//     so the lists hold every pair that can come within the kernel support or the contact distance.
+// Double build: the same pairs and formulas as the reference, summed in another order (round-off only).
+// Float build: every field in float except positions, kept in double so that displacements of 1e-7 of a
+// spacing are not lost; pair distances are taken in double and then rounded.
+#pragma once
+#include <thrust/copy.h>
+#include <thrust/device_ptr.h>
+#include <thrust/device_vector.h>
+#include <thrust/fill.h>
+#include <thrust/gather.h>
+#include <thrust/reduce.h>
+#include <thrust/scan.h>
+#include <thrust/sequence.h>
+#include <thrust/sort.h>
+#include <thrust/transform_reduce.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "common/contact.hpp"
+#include "common/errors.hpp"
+#include "common/integration.hpp"
+#include "common/kernels.hpp"
+#include "common/pair_terms.hpp"
+#include "common/timestep.hpp"
+#include "gpu/launch.hpp"
+#include "gpu/solver.hpp"
+
+namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND {
+
+template <class T> using DVec = thrust::device_vector<T>;
+template <class T> T* raw(DVec<T>& v) { return thrust::raw_pointer_cast(v.data()); }
+
+using Vec3p = Vec3<double>;  // positions, m, double in both precisions
+constexpr int kMaxPlanes = 6;
+
+template <class To, class From> IMPACTSPH_GPU_HD inline Vec3<To> cast3(Vec3<From> a) {
+  return {static_cast<To>(a.x), static_cast<To>(a.y), static_cast<To>(a.z)};
+}
+
+// Cells of half the search radius in a box; key = (cz dy + cy) dx + cx, so the cells along x are
+// contiguous and a row of five cells is one range of sorted points.
+struct Grid {
+  double lo[3];
+  double cell;
+  std::int64_t dims[3];
+  IMPACTSPH_GPU_HD std::int64_t coord(double x, int a) const {
+    const std::int64_t c = static_cast<std::int64_t>((x - lo[a]) / cell);
+    return c < 0 ? 0 : (c > dims[a] - 1 ? dims[a] - 1 : c);
+  }
+  IMPACTSPH_GPU_HD std::uint32_t key(Vec3p x) const {
+    return static_cast<std::uint32_t>((coord(x.z, 2) * dims[1] + coord(x.y, 1)) * dims[0] + coord(x.x, 0));
+  }
+};
+
+// The sorted points and their cell ranges: cell c holds the slots cell_start[c] .. cell_start[c+1].
+struct CellRange {
+  const Vec3p* x;
+  const std::int32_t* cell_start;
+  Grid grid;
+  // Calls f(j) for every sorted slot j != s in the 5x5x5 cells around the cell of slot s.
+  template <class F> IMPACTSPH_GPU_HD void for_each_candidate(std::int64_t s, F&& f) const {
+    const Vec3p xs = x[s];
+    const std::int64_t cx = grid.coord(xs.x, 0), cy = grid.coord(xs.y, 1), cz = grid.coord(xs.z, 2);
+    const std::int64_t x0 = cx - 2 < 0 ? 0 : cx - 2, x1 = cx + 2 > grid.dims[0] - 1 ? grid.dims[0] - 1 : cx + 2;
+    const std::int64_t y0 = cy - 2 < 0 ? 0 : cy - 2, y1 = cy + 2 > grid.dims[1] - 1 ? grid.dims[1] - 1 : cy + 2;
+    const std::int64_t z0 = cz - 2 < 0 ? 0 : cz - 2, z1 = cz + 2 > grid.dims[2] - 1 ? grid.dims[2] - 1 : cz + 2;
+    for (std::int64_t z = z0; z <= z1; ++z)
+      for (std::int64_t y = y0; y <= y1; ++y) {
+        const std::int64_t row = (z * grid.dims[1] + y) * grid.dims[0];  // cells along x are contiguous
+        const std::int32_t first = cell_start[row + x0], last = cell_start[row + x1 + 1];
+        for (std::int32_t j = first; j < last; ++j)
+          if (j != s) f(j);
+      }
+  }
+};
+
+struct Box {
+  Vec3p lo, hi;
+};
+struct PointBox {
+  IMPACTSPH_GPU_HD Box operator()(Vec3p x) const { return {x, x}; }
+};
+struct MergeBox {
+  IMPACTSPH_GPU_HD Box operator()(Box a, Box b) const {
+    return {{a.lo.x < b.lo.x ? a.lo.x : b.lo.x, a.lo.y < b.lo.y ? a.lo.y : b.lo.y, a.lo.z < b.lo.z ? a.lo.z : b.lo.z},
+            {a.hi.x > b.hi.x ? a.hi.x : b.hi.x, a.hi.y > b.hi.y ? a.hi.y : b.hi.y, a.hi.z > b.hi.z ? a.hi.z : b.hi.z}};
+  }
+};
+struct MinOf {
+  template <class T> IMPACTSPH_GPU_HD T operator()(T a, T b) const { return a < b ? a : b; }
+};
+struct MaxOf {
+  template <class T> IMPACTSPH_GPU_HD T operator()(T a, T b) const { return a > b ? a : b; }
+};
+
+// A cheap test before the exact one (r >= kernel_support(h), with r = |x_ij| rounded to Real): true only
+// for pairs clearly beyond the support, with a margin far above the rounding of either test, so the
+// exact test decides every pair near the edge and the results do not change. Saves a square root and the
+// conversions for the quarter of the Verlet list that lies in the skin.
+template <class Real> IMPACTSPH_GPU_HD inline bool outside_support(Vec3p dx, Real h) {
+  const double s = static_cast<double>(kernel_support(h)) * (1.0 + 1e-5);
+  return norm2(dx) > s * s;
+}
+
+struct Plane {
+  int axis;
+  double position;  // m
+  double side;      // +1 or -1: the side the model lies on
+};
+
+// How two bodies interact: shared SPH sums (penalty = 0) or penalty contact (F 4.1-4.6).
+template <class Real>
+struct PairContact {
+  int penalty;
+  Real scale;     // K_p
+  Real distance;  // contact distance, m
+};
+
+template <class Real>
+struct Params {
+  KernelKind kernel;
+  ViscosityParams<Real> visc;
+  CorrectionParams<Real> correction;
+  Real delta;
+  Real cfl;
+  bool balsara;
+  int body_count;
+  int plane_count;
+  Plane planes[kMaxPlanes];
+};
+
+// Mirror image of a point through the planes of `mask`, taken in plane order as the reference does
+// (each plane mirrors the reals and the images made so far): exists when the point, as mirrored so far,
+// lies within `margin` of each plane it is mirrored in. x' = sign x + shift per axis.
+IMPACTSPH_GPU_HD inline bool mirror_image(const Plane* planes, int plane_count, int mask, Vec3p x, double margin,
+                                          Vec3p& sign, Vec3p& shift) {
+  sign = Vec3p{1, 1, 1};
+  shift = Vec3p{0, 0, 0};
+  for (int k = 0; k < plane_count; ++k) {
+    if (!(mask & (1 << k))) continue;
+    const int a = planes[k].axis;
+    const double xa = sign[a] * x[a] + shift[a];
+    const double d = xa - planes[k].position;
+    if ((d < 0 ? -d : d) >= margin) return false;
+    sign[a] = -sign[a];
+    shift[a] = 2 * planes[k].position - shift[a];
+  }
+  return true;
+}
+
+// Wall time of the phases of a step: CUDA events on the device, the steady clock on the host.
+class PhaseClock {
+ public:
+  enum Phase { Sort, TimeStep, Gather, Pass1, Pass2, Advance, Check, Finish, Count };
+  static const char* name(int p) {
+    static const char* names[Count] = {"sort", "time_step", "gather", "pass1", "pass2", "advance", "check", "finish"};
+    return names[p];
+  }
+  bool on = false;
+  // begin(p) ... end(p) around the launches of a phase (extended lambdas may not sit inside a lambda, so
+  // the passes use these); time(p, f) around a call.
+  void begin() {
+    if (!on) return;
+#if defined(__CUDACC__)
+    if (!events_) {
+      check_cuda(cudaEventCreate(&start_), "cudaEventCreate");
+      check_cuda(cudaEventCreate(&stop_), "cudaEventCreate");
+      events_ = true;
+    }
+    check_cuda(cudaEventRecord(start_), "cudaEventRecord");
+#else
+    t0_ = std::chrono::steady_clock::now();
+#endif
+  }
+  void end(Phase p) {
+    if (!on) return;
+#if defined(__CUDACC__)
+    check_cuda(cudaEventRecord(stop_), "cudaEventRecord");
+    check_cuda(cudaEventSynchronize(stop_), "cudaEventSynchronize");
+    float ms = 0;
+    check_cuda(cudaEventElapsedTime(&ms, start_, stop_), "cudaEventElapsedTime");
+    seconds[p] += 1e-3 * ms;
+#else
+    seconds[p] += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+#endif
+    ++calls[p];
+  }
+  template <class F> void time(Phase p, F&& f) {
+    begin();
+    f();
+    end(p);
+  }
+  PhaseClock() = default;
+  PhaseClock(const PhaseClock&) = delete;
+  PhaseClock& operator=(const PhaseClock&) = delete;
+  ~PhaseClock() {
+#if defined(__CUDACC__)
+    if (events_) {
+      cudaEventDestroy(start_);
+      cudaEventDestroy(stop_);
+    }
+#endif
+  }
+  double seconds[Count] = {};
+  long calls[Count] = {};
+
+ private:
+#if defined(__CUDACC__)
+  bool events_ = false;
+  cudaEvent_t start_{}, stop_{};
+#else
+  std::chrono::steady_clock::time_point t0_{};
+#endif
+};
+
+template <class Real>
+struct StateArrays {
+  DVec<Vec3p> pos;
+  DVec<Vec3<Real>> vel;
+  DVec<Real> rho, energy;
+  DVec<Sym3<Real>> S;
+  void resize(std::size_t n) { pos.resize(n); vel.resize(n); rho.resize(n); energy.resize(n); S.resize(n); }
+};
+template <class Real>
+struct StateView {
+  Vec3p* pos;
+  Vec3<Real>* vel;
+  Real* rho;
+  Real* energy;
+  Sym3<Real>* S;
+};
+template <class Real> StateView<Real> view(StateArrays<Real>& s) {
+  return {raw(s.pos), raw(s.vel), raw(s.rho), raw(s.energy), raw(s.S)};
+}
+
+template <class Real>
+class Solver final : public GpuStepper {
+ public:
+  static constexpr bool kFlush = sizeof(Real) < sizeof(double);  // float: subnormals to zero (launch.hpp)
+  Solver(const Scene& scene, const char* build) : numerics_(scene.spec.numerics) {
+    const bool dbl = sizeof(Real) == sizeof(double);
+    name_ = std::string("gpu port (") + (dbl ? "double" : "float") + ", " + build + ")";
+    for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
+    if (scene.spec.symmetry.size() > static_cast<std::size_t>(kMaxPlanes))
+      throw std::runtime_error("the gpu port handles at most 6 symmetry planes");
+    params_.kernel = numerics_.kernel;
+    params_.visc = ViscosityParams<Real>{static_cast<Real>(numerics_.viscosity.linear),
+                                         static_cast<Real>(numerics_.viscosity.quadratic)};
+    params_.correction.max_condition = static_cast<Real>(numerics_.correction.max_condition);
+    params_.delta = static_cast<Real>(numerics_.delta);
+    params_.cfl = static_cast<Real>(numerics_.cfl);
+    params_.balsara = numerics_.viscosity_balsara;
+    params_.body_count = static_cast<int>(scene.bodies.size());
+    params_.plane_count = static_cast<int>(scene.spec.symmetry.size());
+    for (int k = 0; k < params_.plane_count; ++k) {
+      const SymmetryPlaneSpec& plane = scene.spec.symmetry[static_cast<std::size_t>(k)];
+      double side = 0;  // the model lies on one side of each plane (the scene builder guarantees it)
+      for (const Vec3d& x : scene.particles.pos) side += x[plane.axis] - plane.position;
+      params_.planes[k] = Plane{plane.axis, plane.position, side >= 0 ? 1.0 : -1.0};
+    }
+    std::vector<MaterialParams<Real>> mats;
+    for (const MaterialParams<double>& m : scene.materials) mats.push_back(convert(m));
+    materials_ = mats;
+    const std::size_t bc = scene.bodies.size();
+    std::vector<PairContact<Real>> table(bc * bc, PairContact<Real>{0, Real(0), Real(0)});
+    for (const ContactSpec& c : scene.spec.contacts) {
+      if (c.kind != ContactSpec::Kind::Penalty) continue;
+      const double distance = c.contact_distance * numerics_.spacing;
+      const PairContact<Real> pc{1, static_cast<Real>(c.penalty_scale), static_cast<Real>(distance)};
+      table[static_cast<std::size_t>(c.index_a) * bc + static_cast<std::size_t>(c.index_b)] = pc;
+      table[static_cast<std::size_t>(c.index_b) * bc + static_cast<std::size_t>(c.index_a)] = pc;
+      contact_reach_ = std::max(contact_reach_, distance);
+    }
+    contacts_ = table;
+  }
+
+  std::string name() const override { return name_; }
+  StepStats last_stats() const override { return stats_; }
+  void defer_host_copies(bool defer) override { defer_ = defer; }
+  void reload() override { resident_ = false; }
+  long sorts() const override { return sorts_; }
+  void profile_phases(bool on) override { clock_.on = on; }
+  std::vector<PhaseTime> phase_times() const override {
+    std::vector<PhaseTime> r;
+    for (int k = 0; k < PhaseClock::Count; ++k) r.push_back(PhaseTime{PhaseClock::name(k), clock_.calls[k], clock_.seconds[k]});
+    return r;
+  }
+
+  double stable_time_step(const ParticleSet& p) override {
+    if (!resident_) upload(p);
+    const std::int64_t n = n_;
+    Real* out = raw(scratch_real_);
+    const StateView<Real> y = view(y0_);
+    const MaterialParams<Real>* mats = raw(materials_);
+    const Real* h = raw(h_);
+    const std::int32_t* mat = raw(material_);
+    const Real cfl = params_.cfl;
+    clock_.begin();
+    // F eq 5.1 per particle, then the minimum (an exact reduction: the same in any order).
+    launch<kFlush>("time_step", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const MaterialParams<Real>& m = mats[mat[i]];
+      Real c = 0;
+      eos_pressure(m.eos, y.rho[i], y.energy[i], c);
+      out[i] = cfl_time_step(cfl, h[i], signal_speed(m, c, y.rho[i]), norm(y.vel[i]));
+    });
+    const Real dt = thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n, std::numeric_limits<Real>::infinity(),
+                                   MinOf{});
+    clock_.end(PhaseClock::TimeStep);
+    return static_cast<double>(dt);
+  }
+
+  // Also marks the particles for a sort before the next step: a run restarted from what the host now holds
+  // starts with a sort of the same state, so both continue with the same order and the same bits.
+  void copy_to_host(ParticleSet& p) override {
+    if (!resident_) return;
+    sorted_ = false;
+    download(p);
+  }
+
+  // The device state into p, in the scene's order.
+  void download(ParticleSet& p) {
+    const std::int64_t n = n_;
+    const StateView<Real> y = view(y0_);
+    const std::int32_t* orig = raw(original_);
+    Vec3d* pos = raw(out_vec_[0]);
+    Vec3d* vel = raw(out_vec_[1]);
+    Sym3d* S = raw(out_sym_);
+    double* f = raw(out_scalar_);
+    const Real* P = raw(pressure_);
+    const Real* eps = raw(plastic_strain_);
+    const Real* D = raw(damage_);
+    const Real* T = raw(temperature_);
+    // Scatter into the scene's order, widened to double.
+    launch<kFlush>("copy_to_host", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const std::int64_t o = orig[i];
+      pos[o] = y.pos[i];
+      vel[o] = cast3<double>(y.vel[i]);
+      const Sym3<Real> s = y.S[i];
+      S[o] = Sym3d{double(s.xx), double(s.yy), double(s.zz), double(s.xy), double(s.yz), double(s.zx)};
+      f[o] = y.rho[i];
+      f[n + o] = y.energy[i];
+      f[2 * n + o] = P[i];
+      f[3 * n + o] = eps[i];
+      f[4 * n + o] = D[i];
+      f[5 * n + o] = T[i];
+    });
+    thrust::copy(out_vec_[0].begin(), out_vec_[0].end(), p.pos.begin());
+    thrust::copy(out_vec_[1].begin(), out_vec_[1].end(), p.vel.begin());
+    thrust::copy(out_sym_.begin(), out_sym_.end(), p.dev_stress.begin());
+    std::vector<double>* fields[6] = {&p.rho, &p.energy, &p.pressure, &p.plastic_strain, &p.damage, &p.temperature};
+    for (int k = 0; k < 6; ++k)
+      thrust::copy(out_scalar_.begin() + k * n, out_scalar_.begin() + (k + 1) * n, fields[k]->begin());
+  }
+
+  void step(ParticleSet& p, double dt) override {
+    if (!resident_) upload(p);
+    const std::int64_t n = n_;
+    // Pairs approach by at most dt vmax before the second evaluation, each particle moves at most
+    // dt/2 |v| to the midpoint: keep the sort while displacement + dt vmax stays under half the skin.
+    const double vmax = max_speed();
+    if (!sorted_ || max_displacement() + dt * vmax * 1.01 >= 0.5 * skin_)
+      clock_.time(PhaseClock::Sort, [&] { sort_particles(); });
+
+    evaluate(y0_, dt);
+    clock_.time(PhaseClock::Advance, [&] { advance(y0_, 0.5 * dt, y_half_, false); });
+    evaluate(y_half_, dt);
+    clock_.time(PhaseClock::Advance, [&] { advance(y0_, dt, y1_, true); });
+    clock_.time(PhaseClock::Check, [&] { check_state(dt); });
+    stats_.contact_work =
+        dt * static_cast<double>(thrust::reduce(contact_power_.begin(), contact_power_.begin() + n, Real(0)));
+    std::swap(y0_, y1_);
+    clock_.time(PhaseClock::Finish, [&] { finish(); });
+    if (!defer_) download(p);
+  }
+
+ // The rest is public only because nvcc's extended (device) lambdas may not live in private members.
+  static MaterialParams<Real> convert(const MaterialParams<double>& m) {
+    MaterialParams<Real> r;
+    const EosParams<double>& e = m.eos;
+    r.eos = EosParams<Real>{e.kind, Real(e.rho0), Real(e.k1), Real(e.k2), Real(e.k3), Real(e.c0),
+                            Real(e.s1), Real(e.s2), Real(e.s3), Real(e.gamma0), Real(e.a)};
+    const StrengthParams<double>& s = m.strength;
+    r.strength = StrengthParams<Real>{s.kind, Real(s.shear_modulus), Real(s.yield_stress), Real(s.jc_a), Real(s.jc_b),
+                                      Real(s.jc_n), Real(s.jc_c), Real(s.jc_m), Real(s.reference_strain_rate),
+                                      Real(s.melt_temperature), Real(s.taylor_quinney)};
+    const DamageParams<double>& d = m.damage;
+    r.damage = DamageParams<Real>{d.kind, Real(d.critical_plastic_strain), Real(d.d1), Real(d.d2), Real(d.d3),
+                                  Real(d.d4), Real(d.d5), Real(d.min_failure_strain)};
+    r.specific_heat = Real(m.specific_heat);
+    r.room_temperature = Real(m.room_temperature);
+    return r;
+  }
+
+  template <class T> static void upload_converted(const std::vector<double>& src, DVec<T>& dst) {
+    std::vector<T> tmp(src.begin(), src.end());
+    dst = tmp;
+  }
+
+  void upload(const ParticleSet& p) {
+    const std::size_t n = p.size();
+    n_ = static_cast<std::int64_t>(n);
+    y0_.resize(n); y_half_.resize(n); y1_.resize(n);
+    y0_.pos = p.pos;
+    std::vector<Vec3<Real>> vel(n);
+    std::vector<Sym3<Real>> S(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      vel[i] = cast3<Real>(p.vel[i]);
+      const Sym3d& s = p.dev_stress[i];
+      S[i] = Sym3<Real>{Real(s.xx), Real(s.yy), Real(s.zz), Real(s.xy), Real(s.yz), Real(s.zx)};
+    }
+    y0_.vel = vel;
+    y0_.S = S;
+    upload_converted(p.rho, y0_.rho);
+    upload_converted(p.energy, y0_.energy);
+    upload_converted(p.pressure, pressure_);
+    upload_converted(p.plastic_strain, plastic_strain_);
+    upload_converted(p.damage, damage_);
+    upload_converted(p.temperature, temperature_);
+    upload_converted(p.mass, mass_);
+    upload_converted(p.h, h_);
+    material_ = p.material;
+    body_ = p.body;
+    fixed_ = p.fixed;
+    original_.resize(n);
+    thrust::sequence(original_.begin(), original_.end());
+    double h_max = 0;
+    for (double h : p.h) h_max = std::max(h_max, h);
+    // Search radius: the kernel support or the contact distance, plus a skin of 5 % of it.
+    const double reach = std::max(kernel_support(h_max), contact_reach_);
+    skin_ = 0.05 * reach;
+    radius_ = reach + skin_;
+    for (DVec<Real>* a : {&rate_drho_, &rate_de_, &strain_rate_, &contact_power_, &d_eps_p_, &d_temperature_,
+                          &history_rate_, &scratch_real_})
+      a->resize(n);
+    rate_pos_.resize(n); rate_acc_.resize(n); rate_S_.resize(n); grad_v_.resize(n);
+    fallback_.resize(n); neighbour_count_.resize(n); pos_at_sort_.resize(n);
+    out_vec_[0].resize(n); out_vec_[1].resize(n); out_sym_.resize(n); out_scalar_.resize(6 * n);
+    sorted_ = false;
+    resident_ = true;
+  }
+
+  double max_speed() {
+    const StateView<Real> y = view(y0_);
+    Real* out = raw(scratch_real_);
+    launch<kFlush>("speed", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = norm(y.vel[i]); });
+    return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n_, Real(0), MaxOf{}));
+  }
+
+  double max_displacement() {
+    const Vec3p* x = raw(y0_.pos);
+    const Vec3p* x0 = raw(pos_at_sort_);
+    Real* out = raw(scratch_real_);
+    launch<kFlush>("displacement", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = static_cast<Real>(norm(x[i] - x0[i])); });
+    return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n_, Real(0), MaxOf{}));
+  }
+
+  Grid grid_of(const DVec<Vec3p>& points, std::size_t count, double cell) const {
+    const Vec3p first = points[0];
+    const Box b = thrust::transform_reduce(points.begin(), points.begin() + static_cast<std::int64_t>(count), PointBox{},
+                                           Box{first, first}, MergeBox{});
+    Grid g;
+    g.cell = cell;
+    for (int a = 0; a < 3; ++a) {
+      g.lo[a] = b.lo[a];
+      g.dims[a] = std::max<std::int64_t>(1, static_cast<std::int64_t>((b.hi[a] - b.lo[a]) / cell) + 1);
+    }
+    const std::int64_t cells = g.dims[0] * g.dims[1] * g.dims[2];
+    if (cells > 32 * static_cast<std::int64_t>(count) + 1000000 || cells >= (std::int64_t(1) << 32))
+      throw std::runtime_error("particles spread over too large a box for the cell list (a particle has flown far away?)");
+    return g;
+  }
+
+  // Permutes every per-particle array of the reals by `perm` (new i <- old perm[i]).
+  template <class T> void permute(DVec<T>& a, DVec<T>& tmp) {
+    tmp.resize(a.size());
+    thrust::gather(perm_.begin(), perm_.end(), a.begin(), tmp.begin());
+    a.swap(tmp);
+  }
+
+  // Re-sort: the reals into the order of their cells (so that neighbours are near in memory), the mirror
+  // ghosts of the symmetry planes, then all points by cell key with cell ranges.
+  void sort_particles() {
+    const std::int64_t n = n_;
+    if (n == 0) return;
+    ++sorts_;
+    const double cell = 0.5 * radius_;
+    {
+      // Key (cell, index in the scene): the order depends on the positions only, not on the order before,
+      // so a run restarted from a checkpoint sorts exactly as the run that wrote it (copy_to_host).
+      const Grid g = grid_of(y0_.pos, static_cast<std::size_t>(n), cell);
+      real_keys_.resize(static_cast<std::size_t>(n));
+      perm_.resize(static_cast<std::size_t>(n));
+      std::uint64_t* key = raw(real_keys_);
+      const Vec3p* x = raw(y0_.pos);
+      const std::int32_t* orig = raw(original_);
+      launch<kFlush>("real_keys", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+        key[i] = (static_cast<std::uint64_t>(g.key(x[i])) << 32) | static_cast<std::uint32_t>(orig[i]);
+      });
+      thrust::sequence(perm_.begin(), perm_.end());
+      thrust::sort_by_key(real_keys_.begin(), real_keys_.end(), perm_.begin());
+      DVec<Vec3p> t3p; DVec<Vec3<Real>> t3; DVec<Real> t1; DVec<Sym3<Real>> ts; DVec<std::int32_t> ti;
+      DVec<std::uint8_t> tb;
+      permute(y0_.pos, t3p); permute(y0_.vel, t3); permute(y0_.rho, t1); permute(y0_.energy, t1); permute(y0_.S, ts);
+      permute(pressure_, t1); permute(plastic_strain_, t1); permute(damage_, t1); permute(temperature_, t1);
+      permute(mass_, t1); permute(h_, t1); permute(material_, ti); permute(body_, ti); permute(fixed_, tb);
+      permute(original_, ti);
+    }
+    // Ghosts: count the images of each real, scan, fill.
+    const int planes = params_.plane_count;
+    const int masks = 1 << planes;
+    const Params<Real> prm = params_;
+    const double margin = radius_;
+    ghost_count_.resize(static_cast<std::size_t>(n) + 1);
+    std::int32_t* count = raw(ghost_count_);
+    const Vec3p* x = raw(y0_.pos);
+    launch<kFlush>("ghost_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      std::int32_t c = 0;
+      Vec3p sign, shift;
+      for (int m = 1; m < masks; ++m)
+        if (mirror_image(prm.planes, planes, m, x[i], margin, sign, shift)) ++c;
+      count[i] = c;
+    });
+    thrust::exclusive_scan(ghost_count_.begin(), ghost_count_.begin() + n + 1, ghost_count_.begin());
+    ghosts_ = ghost_count_[static_cast<std::size_t>(n)];
+    ghost_source_.resize(static_cast<std::size_t>(ghosts_));
+    ghost_sign_.resize(static_cast<std::size_t>(ghosts_));
+    ghost_shift_.resize(static_cast<std::size_t>(ghosts_));
+    std::int32_t* src = raw(ghost_source_);
+    Vec3p* gsign = raw(ghost_sign_);
+    Vec3p* gshift = raw(ghost_shift_);
+    launch<kFlush>("ghost_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      std::int32_t k = count[i];
+      Vec3p sign, shift;
+      for (int m = 1; m < masks; ++m)
+        if (mirror_image(prm.planes, planes, m, x[i], margin, sign, shift)) {
+          src[k] = static_cast<std::int32_t>(i);
+          gsign[k] = sign;
+          gshift[k] = shift;
+          ++k;
+        }
+    });
+    // All points, sorted by cell key.
+    const std::int64_t total = n + ghosts_;
+    points_.resize(static_cast<std::size_t>(total));
+    Vec3p* pts = raw(points_);
+    launch<kFlush>("points", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+      if (s < n) {
+        pts[s] = x[s];
+      } else {
+        const std::int64_t k = s - n;
+        pts[s] = hadamard(gsign[k], x[src[k]]) + gshift[k];
+      }
+    });
+    grid_ = grid_of(points_, static_cast<std::size_t>(total), cell);
+    const Grid g = grid_;
+    keys_.resize(static_cast<std::size_t>(total));
+    order_.resize(static_cast<std::size_t>(total));
+    slot_of_.resize(static_cast<std::size_t>(total));
+    std::uint32_t* key = raw(keys_);
+    launch<kFlush>("point_keys", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { key[s] = g.key(pts[s]); });
+    thrust::sequence(order_.begin(), order_.end());
+    thrust::stable_sort_by_key(keys_.begin(), keys_.end(), order_.begin());
+    const std::int32_t* order = raw(order_);
+    std::int32_t* slot = raw(slot_of_);
+    launch<kFlush>("slot_of", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { slot[order[s]] = static_cast<std::int32_t>(s); });
+    // cell_start[c] = the first sorted slot whose key is >= c, for c in [0, cells].
+    const std::int64_t cells = g.dims[0] * g.dims[1] * g.dims[2];
+    cell_start_.resize(static_cast<std::size_t>(cells) + 1);
+    std::int32_t* start = raw(cell_start_);
+    launch<kFlush>("cell_start", total + 1, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+      const std::int64_t before = s == 0 ? -1 : static_cast<std::int64_t>(key[s - 1]);
+      const std::int64_t here = s == total ? cells : static_cast<std::int64_t>(key[s]);
+      for (std::int64_t c = before + 1; c <= here; ++c) start[c] = static_cast<std::int32_t>(s);
+    });
+    // Verlet list of each real: the sorted slots within the search radius, gathered over the 5x5x5 cells
+    // around it (count, scan, fill: no atomics, each row in slot order).
+    sorted_points_.resize(static_cast<std::size_t>(total));
+    Vec3p* sp = raw(sorted_points_);
+    launch<kFlush>("sorted_points", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { sp[s] = pts[order[s]]; });
+    list_offset_.resize(static_cast<std::size_t>(n) + 1);
+    std::int64_t* off = raw(list_offset_);
+    const double r2 = radius_ * radius_;
+    const CellRange cr{sp, start, g};
+    launch<kFlush>("list_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const std::int64_t s = slot[i];
+      const Vec3p xs = sp[s];
+      std::int64_t c = 0;
+      cr.for_each_candidate(s, [&](std::int32_t j) {
+        if (norm2(xs - sp[j]) < r2) ++c;
+      });
+      off[i] = c;
+    });
+    thrust::exclusive_scan(list_offset_.begin(), list_offset_.end(), list_offset_.begin());
+    list_.resize(static_cast<std::size_t>(list_offset_[static_cast<std::size_t>(n)]));
+    std::int32_t* list = raw(list_);
+    launch<kFlush>("list_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const std::int64_t s = slot[i];
+      const Vec3p xs = sp[s];
+      std::int64_t k = off[i];
+      cr.for_each_candidate(s, [&](std::int32_t j) {
+        if (norm2(xs - sp[j]) < r2) list[k++] = j;
+      });
+    });
+    thrust::copy(y0_.pos.begin(), y0_.pos.end(), pos_at_sort_.begin());
+    const std::size_t t = static_cast<std::size_t>(total);
+    wx_.resize(t); wv_.resize(t); wrho_.resize(t); wp_.resize(t); wc_.resize(t); wm_.resize(t); wh_.resize(t);
+    wvol_.resize(t); wA_.resize(t); wS_.resize(t); wmat_.resize(t); wbody_.resize(t); wdamage_.resize(t);
+    wlinv_.resize(t); wgrad_rho_.resize(t); wav_.resize(t);
+    sorted_ = true;
+    stats_.ghosts = static_cast<std::size_t>(ghosts_);
+  }
+
+  // Raw pointers to the work arrays (sorted slots, reals and ghosts), captured by the pass kernels.
+  struct Work {
+    Vec3p* x;
+    Vec3<Real>* v;
+    Real *rho, *p, *c, *m, *h, *vol, *damage, *av;
+    Sym3<Real>* A;  // (S - P I) / rho^2
+    Sym3<Real>* S;  // deviatoric stress after apply_failure
+    std::int32_t *mat, *body;
+    Mat3<Real>* linv;
+    Vec3<Real>* grad_rho;
+    const std::int64_t* list_offset;  // Verlet list of real i: slots list[list_offset[i] .. list_offset[i+1])
+    const std::int32_t* list;
+    const PairContact<Real>* contact;
+    int body_count;
+    IMPACTSPH_GPU_HD const PairContact<Real>& pair(std::int32_t a, std::int32_t b) const {
+      return contact[a * body_count + b];
+    }
+  };
+  Work work() {
+    return Work{raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
+                raw(wav_), raw(wA_), raw(wS_), raw(wmat_), raw(wbody_), raw(wlinv_), raw(wgrad_rho_),
+                raw(list_offset_), raw(list_), raw(contacts_), params_.body_count};
+  }
+
+  void evaluate(StateArrays<Real>& state, double dt_in) {
+    const std::int64_t n = n_, total = n_ + ghosts_;
+    const StateView<Real> y = view(state);
+    const Work w = work();
+    const MaterialParams<Real>* mats = raw(materials_);
+    const Params<Real> prm = params_;
+    const Real dt = static_cast<Real>(dt_in);
+    const std::int32_t* order = raw(order_);
+    const std::int32_t* slot = raw(slot_of_);
+    const std::int32_t* gsrc = raw(ghost_source_);
+    const Vec3p* gsign = raw(ghost_sign_);
+    const Vec3p* gshift = raw(ghost_shift_);
+    const Real* mass = raw(mass_);
+    const Real* h = raw(h_);
+    const Real* damage = raw(damage_);
+    const std::int32_t* material = raw(material_);
+    const std::int32_t* body = raw(body_);
+    const std::uint8_t* fixed = raw(fixed_);
+
+    // Work arrays in sorted order: reals from the state, ghosts as mirror images of their source. EOS
+    // pressure and sound speed; a failed particle carries no deviator and no tension (F 4.2).
+    clock_.begin();
+    launch<kFlush>("gather", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+      const std::int64_t pnt = order[s];
+      const std::int64_t i = pnt < n ? pnt : gsrc[pnt - n];
+      const std::int32_t mi = material[i];
+      Real c = 0;
+      Real P = eos_pressure(mats[mi].eos, y.rho[i], y.energy[i], c);
+      Sym3<Real> S = y.S[i];
+      apply_failure(S, P, damage[i]);
+      Vec3p xs = y.pos[i];
+      Vec3<Real> vs = y.vel[i];
+      if (pnt >= n) {
+        const Vec3p sg = gsign[pnt - n];
+        xs = hadamard(sg, xs) + gshift[pnt - n];
+        const Vec3<Real> sr = cast3<Real>(sg);
+        vs = hadamard(sr, vs);
+        S = mirror(S, sr);
+      }
+      const Real rho = y.rho[i];
+      w.x[s] = xs; w.v[s] = vs; w.rho[s] = rho; w.p[s] = P; w.c[s] = c; w.m[s] = mass[i]; w.h[s] = h[i];
+      w.mat[s] = mi; w.body[s] = body[i]; w.damage[s] = damage[i]; w.S[s] = S;
+      w.vol[s] = mass[i] / rho;
+      const Real inv_rho2 = Real(1) / (rho * rho);
+      w.A[s] = inv_rho2 * Sym3<Real>{S.xx - P, S.yy - P, S.zz - P, S.xy, S.yz, S.zx};
+    });
+
+    clock_.end(PhaseClock::Gather);
+
+    // Pass 1: correction matrix, velocity and density gradients (common/pair_terms.hpp).
+    clock_.begin();
+    Mat3<Real>* grad_v = raw(grad_v_);
+    std::int32_t* fell = raw(fallback_);
+    std::int32_t* ncount = raw(neighbour_count_);
+    launch<kFlush>("pass1", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const std::int64_t s = slot[i];
+      const Vec3p xi = w.x[s];
+      const Vec3<Real> vi = w.v[s];
+      const Real rhoi = w.rho[s], hi = w.h[s];
+      const std::int32_t bi = w.body[s];
+      GradientSums<Real> sums = GradientSums<Real>::zero();
+      std::int32_t count = 0;
+      for (std::int64_t k = w.list_offset[i]; k < w.list_offset[i + 1]; ++k) {
+        const std::int32_t j = w.list[k];
+        const Vec3p dx = xi - w.x[j];
+        const Real hij = Real(0.5) * (hi + w.h[j]);
+        if (outside_support(dx, hij)) continue;
+        const Vec3<Real> xij = cast3<Real>(dx);
+        const Real r = norm(xij);
+        if (r >= kernel_support(hij)) continue;
+        ++count;
+        if (w.pair(bi, w.body[j]).penalty) continue;  // bodies in penalty contact do not share sums
+        const Vec3<Real> gw = kernel_grad_factor(prm.kernel, r, hij) * xij;
+        add_gradient_pair(sums, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi);
+      }
+      const CorrectedGradients<Real> cg = corrected_gradients(sums, prm.correction);
+      w.linv[s] = cg.l_inverse;
+      w.grad_rho[s] = cg.grad_rho;
+      grad_v[i] = cg.grad_v;
+      fell[i] = cg.fell_back ? 1 : 0;
+      ncount[i] = count;
+      w.av[s] = prm.balsara ? balsara_factor(cg.grad_v, w.c[s], hi) : Real(1);
+    });
+    launch<kFlush>("ghost_pass1", ghosts_, [=] IMPACTSPH_LAMBDA(std::int64_t k) {
+      const std::int64_t s = slot[n + k], src = slot[gsrc[k]];
+      const Vec3<Real> sg = cast3<Real>(gsign[k]);
+      w.linv[s] = mirror(w.linv[src], sg);
+      w.grad_rho[s] = hadamard(sg, w.grad_rho[src]);
+      w.av[s] = w.av[src];
+    });
+    stats_.correction_fallbacks =
+        static_cast<std::size_t>(thrust::reduce(fallback_.begin(), fallback_.begin() + n, std::int64_t(0)));
+    clock_.end(PhaseClock::Pass1);
+    stats_.mean_neighbours =
+        n ? static_cast<double>(thrust::reduce(neighbour_count_.begin(), neighbour_count_.begin() + n, std::int64_t(0))) /
+                static_cast<double>(n)
+          : 0.0;
+
+    // Stress rate (F 3.5-3.7) and pass 2: continuity with delta-SPH, momentum, energy, penalty contact.
+    clock_.begin();
+    Vec3<Real>* rpos = raw(rate_pos_);
+    Vec3<Real>* racc = raw(rate_acc_);
+    Real* rdrho = raw(rate_drho_);
+    Real* rde = raw(rate_de_);
+    Sym3<Real>* rS = raw(rate_S_);
+    Real* reps = raw(strain_rate_);
+    Real* rcp = raw(contact_power_);
+    launch<kFlush>("pass2", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const std::int64_t s = slot[i];
+      const Vec3p xi = w.x[s];
+      const Vec3<Real> vi = w.v[s], gri = w.grad_rho[s];
+      const Real rhoi = w.rho[s], hi = w.h[s], mi_mass = w.m[s];
+      const std::int32_t mi = w.mat[s], bi = w.body[s];
+      const MaterialParams<Real>& mat_i = mats[mi];
+      const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi};
+      Vec3<Real> acc{0, 0, 0}, contact{0, 0, 0};
+      Real de = 0, diffusion = 0, power = 0;
+      for (std::int64_t k = w.list_offset[i]; k < w.list_offset[i + 1]; ++k) {
+        const std::int32_t j = w.list[k];
+        const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
+        const PairContact<Real>& pc = w.pair(bi, w.body[j]);
+        if (pc.penalty) {
+          const Vec3<Real> vij = vi - w.v[j];
+          const Vec3<Real> force = penalty_contact_force(
+              PenaltyContactParams<Real>{pc.scale}, xij, vij, pc.distance, mi_mass, w.m[j], hi, w.h[j],
+              mat_i.strength.shear_modulus, mats[w.mat[j]].strength.shear_modulus, rhoi, w.rho[j], dt);
+          contact += force;
+          power += Real(0.5) * penalty_contact_energy_rate(force, vij);
+          continue;
+        }
+        const Real hij = Real(0.5) * (hi + w.h[j]);
+        if (outside_support(xi - w.x[j], hij)) continue;
+        const Real r = norm(xij);
+        if (r >= kernel_support(hij)) continue;
+        const Vec3<Real> gw = kernel_grad_factor(prm.kernel, r, hij) * xij;
+        const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j]};
+        add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], acc, de);
+        if (w.mat[j] == mi) diffusion += delta_sph_term(w.vol[j], rhoi, w.rho[j], xij, gri, w.grad_rho[j], gw);
+      }
+      const Mat3<Real> gv = grad_v[i];
+      rS[i] = deviatoric_stress_rate(mat_i, w.S[s], gv);
+      reps[i] = equivalent_strain_rate(gv);
+      const Real c0 = std::sqrt(eos_reference_sound_speed2(mat_i.eos));
+      rdrho[i] = continuity_rate(rhoi, gv, prm.delta, hi, c0, diffusion);
+      rde[i] = de;
+      rcp[i] = power;
+      if (fixed[i]) {
+        rpos[i] = Vec3<Real>{0, 0, 0};
+        racc[i] = Vec3<Real>{0, 0, 0};
+      } else {
+        rpos[i] = vi;
+        racc[i] = acc + (Real(1) / mi_mass) * contact;
+      }
+    });
+    clock_.end(PhaseClock::Pass2);
+  }
+
+  // y = y0 + dt f with the plane reflection, the density floor and the plastic return at the history
+  // variables of the step start (integration.hpp, material.hpp).
+  void advance(StateArrays<Real>& from, double dt_in, StateArrays<Real>& to, bool record) {
+    const StateView<Real> y0 = view(from), out = view(to);
+    const MaterialParams<Real>* mats = raw(materials_);
+    const Params<Real> prm = params_;
+    const Real dt = static_cast<Real>(dt_in);
+    const double dtp = dt_in;
+    const Vec3<Real>* rpos = raw(rate_pos_);
+    const Vec3<Real>* racc = raw(rate_acc_);
+    const Real* rdrho = raw(rate_drho_);
+    const Real* rde = raw(rate_de_);
+    const Sym3<Real>* rS = raw(rate_S_);
+    const Real* reps = raw(strain_rate_);
+    const Real* eps_p = raw(plastic_strain_);
+    const Real* T = raw(temperature_);
+    const Real* D = raw(damage_);
+    const std::int32_t* material = raw(material_);
+    Real* h_eps = raw(d_eps_p_);
+    Real* h_T = raw(d_temperature_);
+    Real* h_rate = raw(history_rate_);
+    launch<kFlush>(record ? "advance_full" : "advance_half", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const MaterialParams<Real>& m = mats[material[i]];
+      Vec3p x = y0.pos[i] + dtp * cast3<double>(rpos[i]);
+      Vec3<Real> v = y0.vel[i] + dt * racc[i];
+      for (int k = 0; k < prm.plane_count; ++k)
+        reflect_at_plane(x, v, prm.planes[k].axis, prm.planes[k].position, prm.planes[k].side);
+      out.pos[i] = x;
+      out.vel[i] = v;
+      const Real rho = advance_density(m, y0.rho[i], rdrho[i], dt);
+      out.rho[i] = rho;
+      out.energy[i] = y0.energy[i] + dt * rde[i];
+      Sym3<Real> S = y0.S[i] + dt * rS[i];
+      const PlasticResult<Real> pr = plastic_update(m, S, eps_p[i], reps[i], T[i], rho, D[i]);
+      out.S[i] = S;
+      if (record) {
+        h_eps[i] = pr.d_eps_p;
+        h_T[i] = pr.d_T;
+        h_rate[i] = reps[i];
+      }
+    });
+  }
+
+  // History variables of the final stage: plastic strain, heating, pressure, damage (F 4.7-4.9).
+  void finish() {
+    const StateView<Real> y = view(y0_);
+    const MaterialParams<Real>* mats = raw(materials_);
+    const std::int32_t* material = raw(material_);
+    Real* eps_p = raw(plastic_strain_);
+    Real* T = raw(temperature_);
+    Real* D = raw(damage_);
+    Real* P = raw(pressure_);
+    const Real* h_eps = raw(d_eps_p_);
+    const Real* h_T = raw(d_temperature_);
+    const Real* h_rate = raw(history_rate_);
+    launch<kFlush>("finish_step", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      finish_step(mats[material[i]], y.rho[i], y.energy[i], y.S[i], eps_p[i], T[i], D[i], P[i], h_eps[i], h_T[i],
+                  h_rate[i]);
+    });
+  }
+
+  // Stops on a non-finite or non-positive state with the particle (lowest scene index) and its fields;
+  // the state of the step start is kept.
+  void check_state(double dt) {
+    const StateView<Real> y = view(y1_);
+    const std::int32_t* orig = raw(original_);
+    const std::int64_t n = n_;
+    bad_.resize(static_cast<std::size_t>(n));
+    std::int64_t* bad = raw(bad_);
+    launch<kFlush>("check_state", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const Vec3p x = y.pos[i];
+      const Vec3<Real> v = y.vel[i];
+      const Sym3<Real> S = y.S[i];
+      const bool ok = std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && std::isfinite(v.x) &&
+                      std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(y.rho[i]) && y.rho[i] > Real(0) &&
+                      std::isfinite(y.energy[i]) && std::isfinite(S.xx) && std::isfinite(S.yy) && std::isfinite(S.zz) &&
+                      std::isfinite(S.xy) && std::isfinite(S.yz) && std::isfinite(S.zx);
+      bad[i] = ok ? std::numeric_limits<std::int64_t>::max() : (static_cast<std::int64_t>(orig[i]) << 32) | i;
+    });
+    const std::int64_t first =
+        thrust::reduce(bad_.begin(), bad_.end(), std::numeric_limits<std::int64_t>::max(), MinOf{});
+    if (first == std::numeric_limits<std::int64_t>::max()) return;
+    const std::size_t i = static_cast<std::size_t>(first & 0xffffffff);
+    const std::int64_t o = first >> 32;
+    const Vec3p x = y1_.pos[i];
+    const Vec3<Real> v = y1_.vel[i];
+    const Sym3<Real> S = y1_.S[i];
+    const std::int32_t b = body_[i];
+    std::ostringstream msg;
+    msg.precision(6);
+    msg << "the solution diverged in the step of dt = " << dt << " s at particle " << o << " of body '"
+        << body_names_[static_cast<std::size_t>(b)] << "': position (" << x.x << ", " << x.y << ", " << x.z
+        << ") m, velocity (" << v.x << ", " << v.y << ", " << v.z << ") m/s, density " << Real(y1_.rho[i])
+        << " kg/m^3, specific energy " << Real(y1_.energy[i]) << " J/kg, von Mises " << von_mises(S)
+        << " Pa. Try a smaller numerics.cfl or larger viscosity coefficients.";
+    throw DivergenceError(msg.str());
+  }
+
+  NumericsSpec numerics_;
+  std::string name_;
+  std::vector<std::string> body_names_;
+  Params<Real> params_{};
+  DVec<MaterialParams<Real>> materials_;
+  DVec<PairContact<Real>> contacts_;
+  double contact_reach_ = 0;  // largest penalty contact distance, m
+  double skin_ = 0, radius_ = 0;  // m
+  bool resident_ = false, sorted_ = false, defer_ = false;
+  long sorts_ = 0;
+  std::int64_t n_ = 0, ghosts_ = 0;
+
+  // Real particles, in the order of the last sort (original_ maps to the scene's order).
+  StateArrays<Real> y0_, y_half_, y1_;
+  DVec<Real> pressure_, plastic_strain_, damage_, temperature_, mass_, h_;
+  DVec<std::int32_t> material_, body_, original_;
+  DVec<std::uint8_t> fixed_;
+  DVec<Vec3p> pos_at_sort_;
+  // Rates of an evaluation and the history of the final stage.
+  DVec<Vec3<Real>> rate_pos_, rate_acc_;
+  DVec<Real> rate_drho_, rate_de_, strain_rate_, contact_power_, d_eps_p_, d_temperature_, history_rate_, scratch_real_;
+  DVec<Sym3<Real>> rate_S_;
+  DVec<Mat3<Real>> grad_v_;
+  DVec<std::int32_t> fallback_, neighbour_count_;
+  DVec<std::int64_t> bad_;
+  // Ghosts and the cell structure.
+  DVec<std::int32_t> ghost_count_, ghost_source_;
+  DVec<Vec3p> ghost_sign_, ghost_shift_, points_;
+  DVec<std::uint32_t> keys_;
+  DVec<std::uint64_t> real_keys_;
+  DVec<std::int32_t> perm_, order_, slot_of_, cell_start_, list_;
+  DVec<std::int64_t> list_offset_;
+  DVec<Vec3p> sorted_points_;
+  Grid grid_{};
+  // Work arrays over sorted slots.
+  DVec<Vec3p> wx_;
+  DVec<Vec3<Real>> wv_, wgrad_rho_;
+  DVec<Real> wrho_, wp_, wc_, wm_, wh_, wvol_, wdamage_, wav_;
+  DVec<Sym3<Real>> wA_, wS_;
+  DVec<std::int32_t> wmat_, wbody_;
+  DVec<Mat3<Real>> wlinv_;
+  // Copies back to the host, in the scene's order.
+  DVec<Vec3d> out_vec_[2];
+  DVec<Sym3d> out_sym_;
+  DVec<double> out_scalar_;
+  StepStats stats_;
+  PhaseClock clock_;
+};
+
+inline std::unique_ptr<GpuStepper> make_solver_for(const Scene& scene, Precision precision, const char* build) {
+  if (precision == Precision::Double) return std::make_unique<Solver<double>>(scene, build);
+  return std::make_unique<Solver<float>>(scene, build);
+}
+
+}  // namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND
