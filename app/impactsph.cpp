@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "app/ballistic_limit.hpp"
+#include "app/run_args.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
@@ -32,32 +33,6 @@ struct CaseArgs {
   std::string spacing;
   std::vector<std::string> sets;
 };
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// FNV-1a 64 of the case text and every override: a restart must see the same inputs.
-std::string fingerprint(const CaseArgs& a) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&](const std::string& s) {
-    for (unsigned char c : s) {
-      h ^= c;
-      h *= 1099511628211ull;
-    }
-    h ^= 0xff;
-    h *= 1099511628211ull;
-  };
-  mix(read_file(a.case_file));
-  mix(a.spacing);
-  for (const std::string& s : a.sets) mix(s);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
 
 const char* shape_name(const BodySpec& b) { return b.shape == Shape::Box ? "box" : "cylinder"; }
 
@@ -117,7 +92,7 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   opt.out_dir = out;
   opt.quiet = quiet;
   opt.threads = threads;
-  opt.fingerprint = fingerprint(args);
+  opt.fingerprint = run_fingerprint(args.case_file, args.spacing, args.sets);
   opt.restart = !restart_dir.empty();
   opt.command_line = argv_all;
   fs::create_directories(opt.out_dir);
