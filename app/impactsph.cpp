@@ -3,6 +3,7 @@
 //   impactsph run --restart DIR
 //   impactsph check CASE.toml [--spacing X] [--set key=value ...]
 //   impactsph ballistic-limit CASE.toml --from V1 --to V2 [--tolerance DV] [--jobs N] [--out DIR] ...
+//   impactsph sweep SWEEP.toml [--jobs N] [--threads-per-run T] [--out DIR] [--emit slurm] [--collect]
 #include <omp.h>
 #include <unistd.h>
 
@@ -15,6 +16,7 @@
 
 #include "app/ballistic_limit.hpp"
 #include "app/run_args.hpp"
+#include "app/sweep.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
@@ -160,7 +162,8 @@ int main(int argc, char** argv) {
       "  impactsph check cases/elastic-wave/case.toml      validate a case and print its scene\n"
       "  impactsph run cases/elastic-wave/case.toml        run it (results in runs/<case name>/)\n"
       "  impactsph run --restart runs/elastic-wave         continue a stopped run from its checkpoint\n"
-      "  impactsph ballistic-limit cases/plate-8mm/case.toml --from 100 --to 300   find the ballistic limit\n\n"
+      "  impactsph ballistic-limit cases/plate-8mm/case.toml --from 100 --to 300   find the ballistic limit\n"
+      "  impactsph sweep cases/sweeps/hugoniot-spacing.toml   run a case over a set of parameters\n\n"
       "Values take units: --spacing 0.5mm, --set projectile.velocity=\"298 m/s\". Case files: docs/case-files.md"};
   app.require_subcommand(1);
 
@@ -203,6 +206,22 @@ int main(int argc, char** argv) {
   ballistic->add_flag("--quiet,-q", ballistic_opt.quiet, "print only the results, no line per run");
   add_case_options(ballistic, ballistic_args);
 
+  SweepOptions sweep_opt;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "run a case over a set of parameters, several runs at a time, resumable; or write a Slurm job array "
+               "(docs/sweeps-and-verification.md)");
+  sweep->add_option("sweep_file", sweep_opt.sweep_file, "sweep file (TOML)")->required()->check(CLI::ExistingFile);
+  sweep->add_option("--out", sweep_opt.out, "folder of the run folders and the table (default runs/<sweep name>)");
+  sweep->add_option("--jobs", sweep_opt.jobs, "runs at a time (default: cores / threads per run)")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--threads-per-run", sweep_opt.threads_per_run, "OpenMP threads of each run")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--emit", sweep_opt.emit, "write a job script instead of running: slurm")
+      ->check(CLI::IsMember({"slurm"}));
+  sweep->add_flag("--collect", sweep_opt.collect, "only build the table (sweep.csv, sweep.md) from the run folders");
+  sweep->add_flag("--retry-failed", sweep_opt.retry_failed, "run again the runs that failed in an earlier sweep");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -210,6 +229,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all);
+    if (*sweep) return sweep_command(sweep_opt);
     if (*ballistic) {
       ballistic_opt.case_file = ballistic_args.case_file;
       ballistic_opt.spacing = ballistic_args.spacing;
