@@ -4,6 +4,7 @@
 //   impactsph check CASE.toml [--spacing X] [--set key=value ...]
 //   impactsph ballistic-limit CASE.toml --from V1 --to V2 [--tolerance DV] [--jobs N] [--out DIR] ...
 //   impactsph sweep SWEEP.toml [--jobs N] [--threads-per-run T] [--out DIR] [--emit slurm] [--collect]
+//   impactsph verify [--suite fast|full] [--out DIR] [--threads N]
 #include <omp.h>
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 #include "app/ballistic_limit.hpp"
 #include "app/run_args.hpp"
 #include "app/sweep.hpp"
+#include "app/verify.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
@@ -163,7 +165,8 @@ int main(int argc, char** argv) {
       "  impactsph run cases/elastic-wave/case.toml        run it (results in runs/<case name>/)\n"
       "  impactsph run --restart runs/elastic-wave         continue a stopped run from its checkpoint\n"
       "  impactsph ballistic-limit cases/plate-8mm/case.toml --from 100 --to 300   find the ballistic limit\n"
-      "  impactsph sweep cases/sweeps/hugoniot-spacing.toml   run a case over a set of parameters\n\n"
+      "  impactsph sweep cases/sweeps/hugoniot-spacing.toml   run a case over a set of parameters\n"
+      "  impactsph verify --suite fast                         convergence report against closed forms\n\n"
       "Values take units: --spacing 0.5mm, --set projectile.velocity=\"298 m/s\". Case files: docs/case-files.md"};
   app.require_subcommand(1);
 
@@ -222,6 +225,19 @@ int main(int argc, char** argv) {
   sweep->add_flag("--collect", sweep_opt.collect, "only build the table (sweep.csv, sweep.md) from the run folders");
   sweep->add_flag("--retry-failed", sweep_opt.retry_failed, "run again the runs that failed in an earlier sweep");
 
+  VerifyOptions verify_opt;
+  CLI::App* verify = app.add_subcommand(
+      "verify", "run the analytic cases over spacings, fit the observed order, write report.md with plots "
+                "(docs/sweeps-and-verification.md)");
+  verify->add_option("--suite", verify_opt.suite, "fast: elastic wave and Hugoniot; full: + Taylor bar, 8 mm plate, "
+                                                  "CFL sensitivity")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fast", "full"}));
+  verify->add_option("--out", verify_opt.out, "report folder (default runs/verify-<suite>)");
+  verify->add_option("--threads", verify_opt.threads, "OpenMP threads of each run (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  verify->add_option("--cases", verify_opt.cases, "folder of the case folders (default: the source tree's cases/)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -230,6 +246,10 @@ int main(int argc, char** argv) {
   try {
     if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all);
     if (*sweep) return sweep_command(sweep_opt);
+    if (*verify) {
+      verify_opt.command_line = argv_all;
+      return verify_command(verify_opt);
+    }
     if (*ballistic) {
       ballistic_opt.case_file = ballistic_args.case_file;
       ballistic_opt.spacing = ballistic_args.spacing;

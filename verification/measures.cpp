@@ -1,10 +1,13 @@
 #include "verification/measures.hpp"
 
+#include <omp.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
 #include "common/case_file.hpp"
+#include "common/driver.hpp"
 #include "common/observables.hpp"
 #include "verification/harness.hpp"
 
@@ -124,14 +127,20 @@ HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string
 }
 
 ObservableRun run_observables(const std::string& case_file, const std::string& spacing,
-                              const std::vector<std::string>& sets) {
+                              const std::vector<std::string>& sets, const std::string& out_dir) {
   Scene scene = build_scene(load_case_file(case_file, sets, spacing));
-  const auto t_start = std::chrono::steady_clock::now();
   reference::ReferenceSolver solver(scene);
-  const long steps = run_reference(scene, solver, scene.spec.time.end);
+  RunOptions opt;
+  opt.out_dir = out_dir;
+  opt.quiet = true;
+  opt.threads = omp_get_max_threads();
+  opt.install_signal_handlers = false;
+  const RunResult res = run_simulation(scene, solver, opt);
   ObservableRun r;
-  r.cost = {scene.spec.numerics.spacing, scene.particles.size(), steps, seconds_since(t_start)};
-  r.observables = measure_observables(scene, scene.particles);
+  r.cost = {scene.spec.numerics.spacing, scene.particles.size(), static_cast<long>(res.clock.step), res.wall_seconds};
+  r.observables = res.observables;
+  const double e0 = res.initial_totals.total_energy();
+  r.energy_drift = (res.final_totals.total_energy() + res.clock.contact_work - e0) / e0;
   return r;
 }
 

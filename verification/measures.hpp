@@ -62,12 +62,14 @@ struct HugoniotMeasure {
 };
 HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed);
 
-// Runs a case to its time.end with the reference solver and measures its [observables].
+// Runs a case through the run driver (so a case with stop_when_settled ends when its residual velocity
+// is steady) into `out_dir`, quietly, and measures its [observables].
 struct ObservableRun {
   CaseObservables observables;
   RunCost cost;
+  double energy_drift = 0;  // (E_end + contact work - E_0)/E_0
 };
 ObservableRun run_observables(const std::string& case_file, const std::string& spacing,
-                              const std::vector<std::string>& sets = {});
+                              const std::vector<std::string>& sets, const std::string& out_dir);
 
 }  // namespace impactsph::verification
