@@ -144,9 +144,10 @@ void progress(const std::string& what, const RunCost& c, const std::string& resu
 // The studies
 
 void elastic_wave(Report& r, const std::string& cases) {
-  const std::string file = cases + "/elastic-wave/case.toml";
-  // The bar is 3 mm square: 3 to 8 particles across.
-  for (const char* h : {"1 mm", "0.75 mm", "0.6 mm", "0.5 mm", "0.375 mm"}) {
+  // A spacing must divide the 4 mm section, the 20 mm flyer and the 80 mm bar, or the lattice leaves gaps
+  // at the faces (cases/elastic-wave-convergence/case.toml).
+  const std::string file = cases + "/elastic-wave-convergence/case.toml";
+  for (const char* h : {"2 mm", "1 mm", "0.8 mm", "0.5 mm", "0.4 mm"}) {
     try {
       const verification::ElasticWaveMeasure m = verification::measure_elastic_wave(file, h, {"output.vtu=false"});
       r.errors.push_back({"elastic wave: velocity profile L1", m.cost.spacing, m.velocity_l1, m.cost});
@@ -165,8 +166,9 @@ void elastic_wave(Report& r, const std::string& cases) {
 void hugoniot(Report& r, const std::string& cases, double speed) {
   const std::string file = cases + "/hugoniot-4340/case.toml";
   const std::string tag = "Hugoniot " + fmt("%.0f", speed) + " m/s";
-  // The plates are 1.5 mm square: 3 to 12 particles across.
-  for (const char* h : {"0.5 mm", "0.375 mm", "0.25 mm", "0.1875 mm", "0.125 mm"}) {
+  // A spacing must divide the 1.5 mm section and the 10 mm plates (no gap at the impact face): 3 to 15
+  // particles across.
+  for (const char* h : {"0.5 mm", "0.25 mm", "0.125 mm", "0.1 mm"}) {
     try {
       const verification::HugoniotMeasure m = verification::measure_hugoniot(file, h, speed);
       r.errors.push_back({tag + ": shock pressure", m.cost.spacing, m.pressure_error(), m.cost});
@@ -365,7 +367,7 @@ int verify_command(const VerifyOptions& opt) {
     throw std::runtime_error("--suite " + opt.suite + ": valid suites are fast (elastic wave, Hugoniot) and full (+ "
                              "Taylor bar, 8 mm plate, CFL sensitivity)");
   const std::string cases = opt.cases.empty() ? std::string(IMPACTSPH_CASES) : opt.cases;
-  for (const char* c : {"elastic-wave", "hugoniot-4340"})
+  for (const char* c : {"elastic-wave-convergence", "hugoniot-4340"})
     if (!fs::is_regular_file(fs::path(cases) / c / "case.toml"))
       throw std::runtime_error("no " + (fs::path(cases) / c / "case.toml").string() +
                                ": give the folder of the case folders with --cases DIR");
@@ -441,7 +443,7 @@ int verify_command(const VerifyOptions& opt) {
         "points do not follow one power of h.\n\n";
 
   md << "## Convergence against closed forms\n\n"
-     << "Elastic wave (cases/elastic-wave): c_L = sqrt((K + 4G/3)/rho) = " << fmt("%.1f", verification::ElasticWaveExact::c_l())
+     << "Elastic wave (cases/elastic-wave-convergence, a 4 mm section that the spacings divide): c_L = sqrt((K + 4G/3)/rho) = " << fmt("%.1f", verification::ElasticWaveExact::c_l())
      << " m/s, stress rho c_L v = " << fmt("%.2f", verification::ElasticWaveExact::stress() / 1e6)
      << " MPa, velocity profile a 10 m/s rectangle of length 2 L_flyer (L1 error relative to its area). Hugoniot "
         "(cases/hugoniot-4340): Us = c0 + s up, P = rho0 Us up with up = V/2.\n\n"
