@@ -381,7 +381,7 @@ int verify_command(const VerifyOptions& opt) {
   if (opt.threads > 0) omp_set_num_threads(opt.threads);
   const int threads = omp_get_max_threads();
   const bool full = opt.suite == "full";
-  const std::string started = utc_now(), load_before = load_average();
+  const std::string started = utc_now(), load_before = load_average(), commit = git_commit();
   const auto t0 = std::chrono::steady_clock::now();
   std::printf("verify: %s suite, %d thread%s, report in %s\n", opt.suite.c_str(), threads, threads > 1 ? "s" : "",
               out.string().c_str());
@@ -436,7 +436,7 @@ int verify_command(const VerifyOptions& opt) {
   md << "`.\n\n"
      << "| | |\n|---|---|\n"
      << "| date | " << started << " |\n"
-     << "| git commit | " << git_commit() << " |\n"
+     << "| git commit (at the start) | " << commit << " |\n"
      << "| CPU | " << cpu_model() << ", " << omp_get_num_procs() << " cores |\n"
      << "| threads per run | " << threads << " (runs one after another) |\n"
      << "| load average (1, 5, 15 min) | " << load_before << " at the start, " << load_average() << " at the end |\n"
