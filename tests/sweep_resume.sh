@@ -23,14 +23,14 @@ third="$runs/spacing-1mm__time.end-30us"
 
 "$exe" sweep "$out/resume.toml" --out "$runs" --jobs 1 > "$out/log1.txt" 2>&1 &
 pid=$!
-# Wait until the third run has been stepping for a second.
-for _ in $(seq 1 600); do
-  [ -f "$third/log.txt" ] && break
-  kill -0 "$pid" 2>/dev/null || fail "the sweep ended before its third run started"
+# Wait until the third run has stepped past 0.5 us (its second row in totals.csv: its stop handlers are
+# installed by then), well before its end at 30 us.
+for _ in $(seq 1 1200); do
+  [ -f "$third/totals.csv" ] && [ "$(wc -l < "$third/totals.csv")" -ge 3 ] && break
+  kill -0 "$pid" 2>/dev/null || fail "the sweep ended before its third run had stepped"
   sleep 0.05
 done
-[ -f "$third/log.txt" ] || fail "the third run never started"
-sleep 1
+[ -f "$third/totals.csv" ] || fail "the third run never started"
 kill -TERM "$pid"
 rc=0; wait "$pid" || rc=$?
 [ "$rc" -eq 130 ] || fail "a stopped sweep should exit 130, got $rc"
