@@ -256,7 +256,8 @@ const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
 
 std::string header(const fs::path& png, const std::string& title, const std::string& xlabel, const std::string& ylabel) {
   std::ostringstream g;
-  g << "# Drawn by impactsph verify; run `gnuplot " << png.filename().string() << "` in the report folder to redraw.\n"
+  g << "# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the\n"
+    << "# output path below is relative to it).\n"
     << "set terminal pngcairo size 1000,750 enhanced font 'Sans,11'\n"
     << "set output " << gp_quote(png.string()) << "\n"
     << "set title " << gp_quote(title) << " noenhanced\n"
