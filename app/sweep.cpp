@@ -88,8 +88,7 @@ std::string name_part(const std::string& text) {
   for (char c : text) {
     if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' || c == ',') s += c;
     else if (c == '/') s += "_per_";
-    else if (c == '^') s += "";
-    else if (c == ' ' || c == '"' || c == '[' || c == ']') continue;
+    else if (c == ' ' || c == '"' || c == '[' || c == ']' || c == '^') continue;
     else s += '_';
   }
   return s.empty() ? "empty" : s;
