@@ -5,8 +5,6 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multifit_nlinear.h>
 #include <omp.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -25,6 +23,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/gnuplot.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
@@ -448,29 +447,6 @@ void write_results(const Search& s, const Outcome& o) {
 // ---------------------------------------------------------------------------------------------------
 // The plot (gnuplot, pngcairo)
 
-// A gnuplot single-quoted string: no escapes inside, a quote is doubled.
-std::string gp_quote(const std::string& text) {
-  std::string q = "'";
-  for (char c : text) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string gp_number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-bool on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (!path) return false;
-  std::stringstream ss(path);
-  std::string dir;
-  while (std::getline(ss, dir, ':'))
-    if (!dir.empty() && access((fs::path(dir) / program).c_str(), X_OK) == 0) return true;
-  return false;
-}
-
 std::string plot_script(const Search& s, const Outcome& o, const fs::path& png) {
   const std::vector<const Run*> runs = sorted_done(s);
   std::vector<double> xs;
@@ -574,34 +550,8 @@ std::string plot_script(const Search& s, const Outcome& o, const fs::path& png) 
 // Writes DIR/ballistic_curve.gp and draws DIR/ballistic_curve.png with it. Returns an error message, or
 // "" when the PNG is there.
 std::string draw_plot(const Search& s, const Outcome& o) {
-  const fs::path png = s.out / "ballistic_curve.png";
-  const fs::path script_file = s.out / "ballistic_curve.gp";
-  write_text_atomic(script_file, plot_script(s, o, png));
-  if (!on_path("gnuplot"))
-    return "gnuplot is not installed, so " + png.string() + " was not drawn (ballistic.csv and ballistic.json are "
-           "written). Install it with `sudo apt-get install gnuplot-nox`, then draw the plot with `gnuplot " +
-           script_file.string() + "`";
-  // Draw into a temporary file and rename, so a failed plot never leaves half a PNG.
-  const fs::path tmp = s.out / ("ballistic_curve.png.tmp-" + std::to_string(getpid()));
-  const std::string script = plot_script(s, o, tmp);
-  void (*old_pipe)(int) = std::signal(SIGPIPE, SIG_IGN);  // gnuplot dying must not kill us mid-write
-  FILE* pipe = popen("gnuplot", "w");
-  if (!pipe) {
-    std::signal(SIGPIPE, old_pipe);
-    return "cannot start gnuplot: " + std::string(std::strerror(errno));
-  }
-  std::fwrite(script.data(), 1, script.size(), pipe);
-  const int status = pclose(pipe);
-  std::signal(SIGPIPE, old_pipe);
-  std::error_code ec;
-  if (status != 0 || !fs::exists(tmp) || fs::file_size(tmp, ec) == 0) {
-    fs::remove(tmp, ec);
-    return "gnuplot failed (" + (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                                   : std::string("killed")) +
-           ") drawing " + png.string() + "; its messages are above. The script is " + script_file.string();
-  }
-  fs::rename(tmp, png);
-  return "";
+  return draw_gnuplot(s.out / "ballistic_curve.png", s.out / "ballistic_curve.gp",
+                      [&](const fs::path& png) { return plot_script(s, o, png); });
 }
 
 // ---------------------------------------------------------------------------------------------------

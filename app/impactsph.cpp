@@ -4,6 +4,8 @@
 //   impactsph run --restart DIR
 //   impactsph check CASE.toml [--spacing X] [--set key=value ...]
 //   impactsph ballistic-limit CASE.toml --from V1 --to V2 [--tolerance DV] [--jobs N] [--out DIR] ...
+//   impactsph sweep SWEEP.toml [--jobs N] [--threads-per-run T] [--out DIR] [--emit slurm] [--collect]
+//   impactsph verify [--suite fast|full] [--out DIR] [--threads N]
 #include <omp.h>
 #include <unistd.h>
 
@@ -15,6 +17,9 @@
 #include <sstream>
 
 #include "app/ballistic_limit.hpp"
+#include "app/run_args.hpp"
+#include "app/sweep.hpp"
+#include "app/verify.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
@@ -34,32 +39,6 @@ struct CaseArgs {
   std::string spacing;
   std::vector<std::string> sets;
 };
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// FNV-1a 64 of the case text and every override: a restart must see the same inputs.
-std::string fingerprint(const CaseArgs& a) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&](const std::string& s) {
-    for (unsigned char c : s) {
-      h ^= c;
-      h *= 1099511628211ull;
-    }
-    h ^= 0xff;
-    h *= 1099511628211ull;
-  };
-  mix(read_file(a.case_file));
-  mix(a.spacing);
-  for (const std::string& s : a.sets) mix(s);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
-}
 
 const char* shape_name(const BodySpec& b) { return b.shape == Shape::Box ? "box" : "cylinder"; }
 
@@ -139,7 +118,7 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   opt.out_dir = out;
   opt.quiet = quiet;
   opt.threads = threads;
-  opt.fingerprint = fingerprint(args);
+  opt.fingerprint = run_fingerprint(args.case_file, args.spacing, args.sets);
   opt.restart = !restart_dir.empty();
   opt.command_line = argv_all;
   fs::create_directories(opt.out_dir);
@@ -208,7 +187,9 @@ int main(int argc, char** argv) {
       "  impactsph check cases/elastic-wave/case.toml      validate a case and print its scene\n"
       "  impactsph run cases/elastic-wave/case.toml        run it (results in runs/<case name>/)\n"
       "  impactsph run --restart runs/elastic-wave         continue a stopped run from its checkpoint\n"
-      "  impactsph ballistic-limit cases/plate-8mm/case.toml --from 100 --to 300   find the ballistic limit\n\n"
+      "  impactsph ballistic-limit cases/plate-8mm/case.toml --from 100 --to 300   find the ballistic limit\n"
+      "  impactsph sweep cases/sweeps/hugoniot-spacing.toml   run a case over a set of parameters\n"
+      "  impactsph verify --suite fast                         convergence report against closed forms\n\n"
       "Values take units: --spacing 0.5mm, --set projectile.velocity=\"298 m/s\". Case files: docs/case-files.md"};
   app.require_subcommand(1);
 
@@ -255,6 +236,35 @@ int main(int argc, char** argv) {
   ballistic->add_flag("--quiet,-q", ballistic_opt.quiet, "print only the results, no line per run");
   add_case_options(ballistic, ballistic_args);
 
+  SweepOptions sweep_opt;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "run a case over a set of parameters, several runs at a time, resumable; or write a Slurm job array "
+               "(docs/sweeps-and-verification.md)");
+  sweep->add_option("sweep_file", sweep_opt.sweep_file, "sweep file (TOML)")->required()->check(CLI::ExistingFile);
+  sweep->add_option("--out", sweep_opt.out, "folder of the run folders and the table (default runs/<sweep name>)");
+  sweep->add_option("--jobs", sweep_opt.jobs, "runs at a time (default: cores / threads per run)")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--threads-per-run", sweep_opt.threads_per_run, "OpenMP threads of each run")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--emit", sweep_opt.emit, "write a job script instead of running: slurm")
+      ->check(CLI::IsMember({"slurm"}));
+  sweep->add_flag("--collect", sweep_opt.collect, "only build the table (sweep.csv, sweep.md) from the run folders");
+  sweep->add_flag("--retry-failed", sweep_opt.retry_failed, "run again the runs that failed in an earlier sweep");
+
+  VerifyOptions verify_opt;
+  CLI::App* verify = app.add_subcommand(
+      "verify", "run the analytic cases over spacings, fit the observed order, write report.md with plots "
+                "(docs/sweeps-and-verification.md)");
+  verify->add_option("--suite", verify_opt.suite, "fast: elastic wave and Hugoniot; full: + Taylor bar, 8 mm plate, "
+                                                  "CFL sensitivity; smoke: 3 coarse elastic-wave runs (CI)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"fast", "full", "smoke"}));
+  verify->add_option("--out", verify_opt.out, "report folder (default runs/verify-<suite>)");
+  verify->add_option("--threads", verify_opt.threads, "OpenMP threads of each run (default: all cores)")
+      ->check(CLI::PositiveNumber);
+  verify->add_option("--cases", verify_opt.cases, "folder of the case folders (default: the source tree's cases/)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -262,6 +272,11 @@ int main(int argc, char** argv) {
   }
   try {
     if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all, backend, precision);
+    if (*sweep) return sweep_command(sweep_opt);
+    if (*verify) {
+      verify_opt.command_line = argv_all;
+      return verify_command(verify_opt);
+    }
     if (*ballistic) {
       ballistic_opt.case_file = ballistic_args.case_file;
       ballistic_opt.spacing = ballistic_args.spacing;

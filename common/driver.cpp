@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -63,6 +64,8 @@ std::string format_wall(double s) {
   return buf;
 }
 
+}  // namespace
+
 std::string cpu_model() {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
@@ -75,10 +78,19 @@ std::string cpu_model() {
   return "unknown";
 }
 
+namespace {
+
+// Particles whose kernel-correction matrix was ill-conditioned (solver falls back to the uncorrected
+// gradient), counted over the steps of this process (a restart counts from the restart).
+struct FallbackCount {
+  std::size_t last = 0, max_per_step = 0;
+  std::uint64_t total = 0;  // particle-steps
+};
+
 nlohmann::json vec_json(Vec3d v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions& opt, const RunResult& r,
-                   double correction_fallbacks) {
+                   const FallbackCount& fallbacks) {
   nlohmann::json j;
   j["case"] = scene.spec.name;
   j["case_file"] = scene.spec.source_file;
@@ -95,7 +107,9 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
   j["wall_time_s"] = r.wall_seconds;
   j["particle_steps_per_second"] = r.particle_steps_per_second;
   j["mean_neighbours"] = r.mean_neighbours;
-  j["correction_fallbacks_last_step"] = correction_fallbacks;
+  j["fingerprint"] = opt.fingerprint;
+  j["correction_fallbacks_last_step"] = fallbacks.last;
+  j["correction_fallbacks"] = {{"particle_steps", fallbacks.total}, {"max_per_step", fallbacks.max_per_step}};
   nlohmann::json bodies = nlohmann::json::array();
   for (std::size_t k = 0; k < r.bodies.size(); ++k) {
     const BodySummary& b = r.bodies[k];
@@ -197,7 +211,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
   const double time_at_start = clock.time;
   double first_dt = 0;
   const double time_eps = 1e-12 * ts.end;
-  std::size_t fallbacks = 0;
+  FallbackCount fallbacks;
 
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
   auto observe = [&](bool force) {
@@ -248,7 +262,9 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
       const StepStats st = stepper.last_stats();
       clock.neighbour_sum += st.mean_neighbours;
       clock.contact_work += st.contact_work;
-      fallbacks = st.correction_fallbacks;
+      fallbacks.last = st.correction_fallbacks;
+      fallbacks.total += st.correction_fallbacks;
+      fallbacks.max_per_step = std::max(fallbacks.max_per_step, st.correction_fallbacks);
       observe(false);
       if (clock.time >= clock.next_checkpoint - time_eps) {
         while (clock.next_checkpoint <= clock.time + time_eps) clock.next_checkpoint += ts.checkpoint_interval;
@@ -299,7 +315,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
   result.final_totals = summarise_totals(p);
   result.observables = measure_observables(scene, p);
   result.observables.settled_time = clock.settled_time;
-  write_summary(scene, stepper, opt, result, static_cast<double>(fallbacks));
+  write_summary(scene, stepper, opt, result, fallbacks);
   return result;
 }
 

@@ -41,6 +41,9 @@ struct RunResult {
 // writing the last good state (frame and checkpoint) when the run diverges.
 RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& options);
 
+// The CPU model of this machine (/proc/cpuinfo "model name"), or "unknown".
+std::string cpu_model();
+
 // The name of the checkpoint file inside an output folder.
 std::filesystem::path checkpoint_path(const std::filesystem::path& out_dir);
 

@@ -1,5 +1,10 @@
 # A hard case must run to its end time (or settle) without NaN and with bounded total energy:
-# `impactsph run` exits 0 and summary.json's energy drift is below 10 %.
+# `impactsph run` exits 0 (a NaN, an Inf or a collapsed time step stops it with status 3), every figure of
+# summary.json's totals is a number, and the energy drift (kinetic + internal + contact work, which the
+# equations conserve exactly: fixed particles and mirror planes do no work) is below 10 %. The scheme's
+# drift on the validated plate cases is 0.01-1.5 %; an instability feeds energy exponentially, so 10 %
+# separates a run that holds from one that blows up. Prints the kernel-correction fallbacks
+# (particle-steps whose L_i was ill-conditioned) from summary.json.
 # -DEXE=... -DOUT=... -DARGS="case;--spacing;2mm;..." (a CMake list)
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${EXE} run ${ARGS} --out ${OUT} --quiet --set output.vtu=false
@@ -8,9 +13,19 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "impactsph run failed (${rc}):\n${out}\n${err}")
 endif()
 file(READ ${OUT}/summary.json summary)
+foreach(key initial_energy_J final_energy_J energy_drift_relative)
+  string(JSON type TYPE "${summary}" totals ${key})
+  if(NOT type STREQUAL "NUMBER")
+    message(FATAL_ERROR "summary.json totals.${key} is ${type}, not a number (NaN or Inf)")
+  endif()
+endforeach()
 string(JSON drift GET "${summary}" totals energy_drift_relative)
 string(JSON steps GET "${summary}" steps)
-message(STATUS "${steps} steps, energy drift ${drift}\n${out}")
+string(JSON particles GET "${summary}" particles)
+string(JSON fallbacks GET "${summary}" correction_fallbacks particle_steps)
+string(JSON fallbacks_max GET "${summary}" correction_fallbacks max_per_step)
+message(STATUS "${particles} particles, ${steps} steps, energy drift ${drift}, kernel-correction fallbacks "
+               "${fallbacks} particle-steps (at most ${fallbacks_max} particles in one step)\n${out}")
 if(drift GREATER 0.1 OR drift LESS -0.1)
   message(FATAL_ERROR "total energy drifted by ${drift} (more than 10 %)")
 endif()

@@ -1,0 +1,17 @@
+// What identifies one `impactsph run`: the case file, --spacing and the --set overrides. Shared by the
+// run command (checkpoints and summary.json carry the fingerprint) and the sweep (which skips runs whose
+// summary.json holds the fingerprint it would give). Host only.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace impactsph {
+
+std::string read_text_file(const std::string& path);  // "" when it cannot be read
+
+// FNV-1a 64 of the case file's text, the spacing and every override, as 16 hex digits: a restart must
+// see the same inputs, and a finished run with the same fingerprint need not run again.
+std::string run_fingerprint(const std::string& case_file, const std::string& spacing,
+                            const std::vector<std::string>& sets);
+
+}  // namespace impactsph

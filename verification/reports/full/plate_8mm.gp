@@ -1,0 +1,18 @@
+# Drawn by impactsph verify; run `gnuplot plate_8mm.png` in the report folder to redraw.
+set terminal pngcairo size 1000,650 enhanced font 'Sans,11'
+set output 'verification/reports/full/plate_8mm.png'
+set title '8 mm Weldox 460 E plate at 298 m/s: residual velocity against spacing' noenhanced
+set xlabel 'spacing h [mm]'
+set ylabel 'residual velocity [m/s]'
+set grid
+set key outside right top noenhanced
+set xrange [0:*]
+$o0 << EOD
+4 172.9227204
+2 223.9977133
+1.6 228.9256179
+1.3333333 233.2329415
+EOD
+plot $o0 u 1:2 w lp pt 7 ps 1.4 lc rgb '#1f77b4' t '8 mm plate at 298 m/s: residual velocity, simulated', \
+     232.7248599 w l lw 2 dt 2 lc rgb '#1f77b4' t '8 mm plate at 298 m/s: residual velocity, experiment 232.7'
+unset output

@@ -1,0 +1,26 @@
+# Drawn by impactsph verify; run `gnuplot taylor_bar.png` in the report folder to redraw.
+set terminal pngcairo size 1000,650 enhanced font 'Sans,11'
+set output 'verification/reports/full/taylor_bar.png'
+set title 'Taylor bar (OFHC copper, 190 m/s): final shape against spacing' noenhanced
+set xlabel 'spacing h [mm]'
+set ylabel '[mm]'
+set grid
+set key outside right top noenhanced
+set xrange [0:*]
+$o0 << EOD
+1.27 19.55886977
+0.8467 18.99019649
+0.635 18.63528489
+0.508 18.38961077
+EOD
+$o1 << EOD
+1.27 11.94871273
+0.8467 12.05326534
+0.635 12.67347298
+0.508 13.32749051
+EOD
+plot $o0 u 1:2 w lp pt 7 ps 1.4 lc rgb '#1f77b4' t 'Taylor bar: final length, simulated', \
+     16.21 w l lw 2 dt 2 lc rgb '#1f77b4' t 'Taylor bar: final length, experiment 16.21', \
+     $o1 u 1:2 w lp pt 7 ps 1.4 lc rgb '#d62728' t 'Taylor bar: impact-face diameter, simulated', \
+     13.56 w l lw 2 dt 2 lc rgb '#d62728' t 'Taylor bar: impact-face diameter, experiment 13.56'
+unset output
