@@ -137,18 +137,21 @@ open(os.path.join(out, "report.md"), "w").write("\n".join(L))
 with open(os.path.join(out, "residuals.dat"), "w") as d:
     for k in ["pam", "pcm", "fixh"]:
         d.write("# %s\n" % k)
-        for r in [r for r in rows if r["kind"] == k]:
+        block = [r for r in rows if r["kind"] == k]
+        for r in block:
             d.write("%.5f %.2f %.3f %.3f\n" % (r["dx"], r["v"], r["m"], r["frac"] * M0))
+        if not block:
+            d.write("NaN NaN NaN NaN\n")  # keeps the block, so gnuplot's index numbers stay fixed
         d.write("\n\n")
 EOF
 
 cat > "$OUT/residuals.gp" <<'EOF'
-set terminal pngcairo size 1100,450 noenhanced
+set terminal pngcairo size 1200,600 noenhanced
 set output 'residuals.png'
 set multiplot layout 1,2 title "Ceramic tile (X): residual velocity and mass against particle spacing"
 set xlabel "particle spacing (mm)"
 set grid
-set key bottom left
+set key below maxrows 3
 set ylabel "residual velocity (m/s)"
 set xrange [0:1.8]
 plot 682 w l dt 2 lc rgb "black" t "experiment 682 m/s", \
