@@ -159,13 +159,15 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
     std::printf("final_length: %.4f mm\nimpact_face_diameter: %.4f mm\n", o.final_length * 1e3,
                 o.impact_face_diameter * 1e3);
   if (o.projectile) {
-    std::printf("residual_velocity: %.2f m/s\nresidual_mass: %.2f g\n", o.residual_velocity, o.residual_mass * 1e3);
+    std::printf("residual_velocity: %.2f m/s\nresidual_mass: %.2f g\neroded_mass: %.2f g\n", o.residual_velocity,
+                o.residual_mass * 1e3, o.eroded_mass * 1e3);
     if (o.settled_time >= 0) std::printf("settled_time: %.1f us\n", o.settled_time * 1e6);
     else std::printf("settled_time: not settled by the end time\n");
   }
   if (o.target)
     std::printf("plug_velocity: %.2f m/s\nplug_mass: %.2f g\nperforated: %s\n", o.plug_velocity, o.plug_mass * 1e3,
                 o.perforated ? "yes" : "no");
+  if (o.target) std::printf("damage_fraction: %.4f\n", o.damage_fraction);
   std::printf("results: %s (summary.json, history_*.csv, particles.pvd)\n", opt.out_dir.string().c_str());
   return 0;
 }

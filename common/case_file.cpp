@@ -113,7 +113,9 @@ class Reporter {
       const auto it = origin_.find(at);
       if (it != origin_.end()) m += " (set by " + it->second + ")";
     }
-    throw CaseError(file_, line_of(at), key, m);
+    // A value read from a material file (materials.NAME.file) names that file.
+    const std::string file = at && at->source().path && !at->source().path->empty() ? *at->source().path : file_;
+    throw CaseError(file, line_of(at), key, m);
   }
   void mark(const toml::node* n, const std::string& origin) { origin_[n] = origin; }
   const std::string& file() const { return file_; }
@@ -323,8 +325,8 @@ void check_name(const Reporter& r, const toml::node* at, const std::string& key,
 // Materials
 
 const Keys kEosKinds{"linear", "polynomial", "mie-gruneisen", "gruneisen-cubic"};
-const Keys kStrengthKinds{"hydrodynamic", "elastic", "perfectly-plastic", "johnson-cook"};
-const Keys kDamageKinds{"none", "critical-plastic-strain", "johnson-cook"};
+const Keys kStrengthKinds{"hydrodynamic", "elastic", "perfectly-plastic", "johnson-cook", "johnson-holmquist-2"};
+const Keys kDamageKinds{"none", "critical-plastic-strain", "johnson-cook", "johnson-holmquist-2"};
 
 void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
   const std::string kind = e.choice("kind", kEosKinds);
@@ -418,6 +420,32 @@ void read_johnson_cook(const View& s, StrengthParams<double>& p) {
           "the fraction of plastic work that heats the material");
 }
 
+// The JH-2 strength constants (X eqs 22-24, Table 1) of a strength table of kind "johnson-holmquist-2".
+void read_jh2_strength(const View& s, StrengthParams<double>& p) {
+  const std::string norm = "a normalised JH-2 constant (dimensionless; X Table 1)";
+  p.jh_a = s.number("a");
+  s.range("a", p.jh_a, 0, 5, Dimension::Dimensionless, true, false, norm);
+  p.jh_b = s.number("b");
+  s.range("b", p.jh_b, 0, 5, Dimension::Dimensionless, false, false, norm);
+  p.jh_n = s.number("n");
+  s.range("n", p.jh_n, 0, 2, Dimension::Dimensionless, true, false, norm);
+  p.jh_m = s.number("m");
+  s.range("m", p.jh_m, 0, 2, Dimension::Dimensionless, true, false, norm);
+  p.jh_c = s.number_or("c", 0.0);
+  s.range("c", p.jh_c, 0, 1, Dimension::Dimensionless, false, false, norm);
+  p.hel = stress(s, "hel", "; the Hugoniot elastic limit, e.g. \"2.79 GPa\"");
+  p.p_hel = stress(s, "p_hel", "; the pressure at the HEL, e.g. \"1.46 GPa\"");
+  if (!(p.p_hel < p.hel))
+    s.fail("p_hel", "must be less than hel = " + format_quantity(p.hel, Dimension::Pressure) + " (got " +
+                        format_quantity(p.p_hel, Dimension::Pressure) + "): HEL = P_HEL + 2/3 sigma_HEL with sigma_HEL > 0");
+  p.tensile_pressure = stress(s, "tensile_strength", "; T, the largest hydrostatic tension, e.g. \"0.2 GPa\"");
+  p.sfmax = s.number_or("sfmax", 1e30);
+  s.range("sfmax", p.sfmax, 0, 1e30, Dimension::Dimensionless, true, false,
+          "the cap of the normalised fractured strength; leave it out for no cap");
+  p.reference_strain_rate = s.quantity_or("reference_strain_rate", Dimension::StrainRate, 1.0);
+  s.positive("reference_strain_rate", p.reference_strain_rate, Dimension::StrainRate);
+}
+
 // Returns the bulk modulus E/(3(1-2nu)) when the elastic constants were given as E and nu, else 0.
 double read_strength(const View& s, StrengthParams<double>& p) {
   const std::string kind = s.choice("kind", kStrengthKinds);
@@ -433,10 +461,14 @@ double read_strength(const View& s, StrengthParams<double>& p) {
     s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio", "yield_stress"});
     p.kind = StrengthKind::PerfectlyPlastic;
     p.yield_stress = stress(s, "yield_stress", "; a material without strength is kind = \"hydrodynamic\"");
-  } else {
+  } else if (kind == "johnson-cook") {
     s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio", "a", "b", "n", "c", "m",
              "reference_strain_rate", "melt_temperature", "taylor_quinney"});
     p.kind = StrengthKind::JohnsonCook;
+  } else {
+    s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio", "a", "b", "c", "m", "n", "hel", "p_hel",
+             "tensile_strength", "sfmax", "reference_strain_rate"});
+    p.kind = StrengthKind::JohnsonHolmquist2;
   }
   const bool has_g = s.has("shear_modulus"), has_e = s.has("youngs_modulus"), has_nu = s.has("poisson_ratio");
   if (has_g && (has_e || has_nu))
@@ -458,6 +490,7 @@ double read_strength(const View& s, StrengthParams<double>& p) {
     derived_k = E / (3 * (1 - 2 * nu));
   }
   if (p.kind == StrengthKind::JohnsonCook) read_johnson_cook(s, p);
+  if (p.kind == StrengthKind::JohnsonHolmquist2) read_jh2_strength(s, p);
   return derived_k;
 }
 
@@ -469,19 +502,40 @@ void read_damage(const View& d, const StrengthParams<double>& strength, DamagePa
     p.kind = DamageKind::None;
     return;
   }
+  if (kind == "johnson-holmquist-2") {
+    if (strength.kind != StrengthKind::JohnsonHolmquist2)
+      d.fail("kind", "damage kind \"johnson-holmquist-2\" needs strength kind \"johnson-holmquist-2\" (its "
+                     "failure strain uses the strength's p_hel and tensile_strength, X eq 26)");
+    d.allow({"kind", "d1", "d2", "min_failure_strain", "bulking", "pair_factor"});
+    p.kind = DamageKind::JohnsonHolmquist2;
+    p.d1 = d.number("d1");
+    d.range("d1", p.d1, 0, 1, Dimension::Dimensionless, true, false, "D1 of eps_f = D1 (P* + T*)^D2 (X eq 26)");
+    p.d2 = d.number("d2");
+    d.range("d2", p.d2, 0, 5, Dimension::Dimensionless, false, false, "D2 of eps_f = D1 (P* + T*)^D2 (X eq 26)");
+    p.min_failure_strain = d.number_or("min_failure_strain", 0.0);
+    d.range("min_failure_strain", p.min_failure_strain, 0, 10, Dimension::Dimensionless);
+    p.bulking = d.number_or("bulking", 0.0);
+    d.range("bulking", p.bulking, 0, 1, Dimension::Dimensionless, false, false,
+            "beta, the fraction of lost elastic energy converted to pressure (X eq 28)");
+    p.scale_pairs = d.boolean_or("pair_factor", false);  // JH-2 carries damage in its strength (X eq 22)
+    return;
+  }
   if (strength.kind != StrengthKind::JohnsonCook && strength.kind != StrengthKind::PerfectlyPlastic)
     d.fail("kind", "damage kind \"" + kind + "\" accumulates plastic strain, but the strength kind \"" +
-                       (strength.kind == StrengthKind::Elastic ? "elastic" : "hydrodynamic") +
-                       "\" has no plasticity; use strength kind \"johnson-cook\" or \"perfectly-plastic\", or "
-                       "damage kind \"none\"");
+                       (strength.kind == StrengthKind::Elastic ? "elastic" : strength.kind == StrengthKind::Hydrodynamic
+                                                                              ? "hydrodynamic"
+                                                                              : "johnson-holmquist-2") +
+                       "\" has no plasticity of that kind; use strength kind \"johnson-cook\" or \"perfectly-plastic\", "
+                       "or damage kind \"none\"");
+  p.scale_pairs = d.boolean_or("pair_factor", true);
   if (kind == "critical-plastic-strain") {
-    d.allow({"kind", "critical_plastic_strain"});
+    d.allow({"kind", "critical_plastic_strain", "pair_factor"});
     p.kind = DamageKind::CriticalPlasticStrain;
     p.critical_plastic_strain = d.number("critical_plastic_strain");
     d.range("critical_plastic_strain", p.critical_plastic_strain, 0, 10, Dimension::Dimensionless, true);
     return;
   }
-  d.allow({"kind", "d1", "d2", "d3", "d4", "d5", "min_failure_strain"});
+  d.allow({"kind", "d1", "d2", "d3", "d4", "d5", "min_failure_strain", "pair_factor"});
   p.kind = DamageKind::JohnsonCook;
   const std::string why = "the Johnson-Cook failure constants are at most 20 in magnitude";
   p.d1 = d.number("d1");
@@ -608,7 +662,7 @@ BodySpec read_body(const View& b, const std::vector<MaterialSpec>& materials) {
   body.name = b.string("name", "\"projectile\"");
   check_name(r, b.find("name"), b.key("name"), body.name);
   const std::string shape = b.choice("shape", kShapes);
-  const Keys common{"name", "material", "shape", "velocity", "direction"};
+  const Keys common{"name", "material", "shape", "velocity", "direction", "variable_h", "h_min", "h_max"};
   Keys valid = common;
   if (shape == "box") valid.insert(valid.end(), {"min", "max"});
   else valid.insert(valid.end(), {"base", "axis", "radius", "length"});
@@ -636,6 +690,17 @@ BodySpec read_body(const View& b, const std::vector<MaterialSpec>& materials) {
     b.positive("length", body.length, Dimension::Length);
   }
   read_velocity(b, body);
+  // Variable smoothing length (X eqs 9-10): bounds as factors of the initial h (X: HMIN 0.2, HMAX 2.0).
+  body.variable_h = b.boolean_or("variable_h", false);
+  for (const char* k : {"h_min", "h_max"})
+    if (!body.variable_h && b.has(k))
+      b.fail(k, std::string(k) + " bounds a variable smoothing length; it needs variable_h = true");
+  body.h_min_factor = b.number_or("h_min", 0.2);
+  b.range("h_min", body.h_min_factor, 0, 1, Dimension::Dimensionless, true, false,
+          "HMIN of X eq 10, a factor of the initial smoothing length");
+  body.h_max_factor = b.number_or("h_max", 2.0);
+  b.range("h_max", body.h_max_factor, 1, 10, Dimension::Dimensionless, false, false,
+          "HMAX of X eq 10, a factor of the initial smoothing length");
   return body;
 }
 
@@ -736,7 +801,7 @@ void read_contacts(const View& root, CaseSpec& spec) {
     ContactSpec contact;
     contact.line = line_of(a->get(i));
     const std::string kind = c.choice("kind", {"penalty", "shared"}, "penalty");
-    if (kind == "penalty") c.allow({"bodies", "kind", "penalty_scale", "contact_distance"});
+    if (kind == "penalty") c.allow({"bodies", "kind", "penalty_scale", "contact_distance", "srad"});
     else c.allow({"bodies", "kind"});
     contact.kind = kind == "penalty" ? ContactSpec::Kind::Penalty : ContactSpec::Kind::Shared;
 
@@ -777,6 +842,13 @@ void read_contacts(const View& root, CaseSpec& spec) {
       contact.contact_distance = c.number_or("contact_distance", 1.0);
       c.range("contact_distance", contact.contact_distance, 0.5, 3, Dimension::Dimensionless, false, false,
               "in particle spacings");
+      if (c.has("srad")) {
+        if (c.has("contact_distance"))
+          c.fail("srad", "give either srad (in smoothing lengths, X eq 18) or contact_distance (in spacings), not both");
+        contact.srad = c.number("srad");
+        c.range("srad", contact.srad, 0.5, 3, Dimension::Dimensionless, false, false,
+                "SRAD of X eqs 18 and 20: particles touch at srad (h_i + h_j)/2");
+      }
     }
     spec.contacts.push_back(contact);
   }
@@ -1038,8 +1110,46 @@ void apply_override(toml::table& root, const std::string& text, Reporter& r) {
   r.mark(put(*target, leaf, holder), origin);
 }
 
+// Material files: a material given as `[materials.NAME]` with the single key `file = "PATH"` (PATH relative
+// to the case file's folder) takes its constants from that TOML file, whose top level holds the keys of
+// a material table (density, eos, strength, ...). Read before the overrides, so NAME.key overrides work on
+// the file's values; errors in the file name the file and its line (the nodes keep their source).
+void resolve_material_files(toml::table& tree, const Reporter& r) {
+  toml::table* materials = tree.get_as<toml::table>("materials");
+  if (!materials) return;
+  const std::filesystem::path base = std::filesystem::path(r.file()).parent_path();
+  for (auto&& [k, v] : *materials) {
+    toml::table* m = v.as_table();
+    if (!m || !m->contains("file")) continue;
+    const std::string key = "materials." + std::string(k.str()) + ".file";
+    const toml::node* f = m->get("file");
+    const auto* path = f->as_string();
+    if (!path) r.fail(f, key, "expected the path of a material file such as \"../materials/alumina-ad995.toml\", not " + type_name(*f));
+    for (auto&& [other, node] : *m)
+      if (other.str() != "file")
+        r.fail(&node, "materials." + std::string(k.str()) + "." + std::string(other.str()),
+               "a material read from a file takes all its constants from the file; give only file = \"...\" here "
+               "(change a constant with an override, NAME.key=VALUE)");
+    const std::filesystem::path full = base / path->get();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(full, ec))
+      r.fail(f, key, "no material file \"" + full.string() + "\" (the path is relative to the case file's folder)");
+    std::ifstream in(full, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    toml::table loaded;
+    try {
+      loaded = toml::parse(text.str(), full.string());
+    } catch (const toml::parse_error& e) {
+      throw CaseError(full.string(), static_cast<int>(e.source().begin.line), "", "not valid TOML: " + std::string(e.description()));
+    }
+    *m = std::move(loaded);
+  }
+}
+
 CaseSpec parse_tree(toml::table& tree, Reporter& r, const std::vector<std::string>& set_overrides,
                     const std::string& spacing_override) {
+  resolve_material_files(tree, r);
   for (const std::string& o : set_overrides) apply_override(tree, o, r);
   if (!spacing_override.empty()) {
     toml::node* n = tree.get("numerics");

@@ -125,6 +125,7 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
     out.projectile = true;
     out.residual_velocity = m > 0 ? mv / m : 0.0;
     out.residual_mass = symmetry_multiplicity(spec, body) * (m - failed);
+    out.eroded_mass = symmetry_multiplicity(spec, body) * failed;
   }
 
   if (os.target_index >= 0) {
@@ -157,6 +158,13 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
       if (p.body[i] == body && p.fixed[i]) plate_rear = std::max(plate_rear, dot(p.pos[i], direction));
       if (p.body[i] == os.projectile_index) projectile_nose = std::max(projectile_nose, dot(p.pos[i], direction));
     }
+    double target_mass = 0, target_failed = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.body[i] == body) {
+        target_mass += p.mass[i];
+        if (p.damage[i] >= 0.99) target_failed += p.mass[i];
+      }
+    out.damage_fraction = target_mass > 0 ? target_failed / target_mass : 0.0;
     out.target = true;
     out.plug_mass = symmetry_multiplicity(spec, body) * plug_mass;
     out.plug_velocity = plug_mass > 0 ? plug_momentum / plug_mass : 0.0;

@@ -31,6 +31,10 @@ struct BodySpec {
   double radius = 0;       // Cylinder, m
   double length = 0;       // Cylinder: extent along +axis from the base, m
   Vec3d velocity{0, 0, 0}; // initial velocity, m/s
+  // Variable smoothing length (X eqs 9-10): dh/dt = (1/3) h div v, kept within
+  // [h_min_factor, h_max_factor] x h0 (h0 = numerics.h_factor x spacing). Off by default.
+  bool variable_h = false;
+  double h_min_factor = 0.2, h_max_factor = 2.0;  // X: HMIN = 0.2, HMAX = 2.0 (LS-DYNA defaults)
   int line = 0;            // line of its [[bodies]] header in the case file, for messages (0: unknown)
 };
 
@@ -61,6 +65,9 @@ struct ContactSpec {
   int index_a = -1, index_b = -1;   // indices into CaseSpec::bodies
   double penalty_scale = 0.3;       // K_p (F Table 3)
   double contact_distance = 1.0;    // particles of the two bodies touch at this many spacings
+  // X eqs 18, 20: when > 0, particles touch at srad (h_i + h_j)/2 instead (SRAD; X uses 1.2), so the
+  // contact follows a variable smoothing length. 0: use contact_distance.
+  double srad = 0;
   int line = 0;                     // line of its [[contacts]] header, for messages (0: unknown)
 };
 

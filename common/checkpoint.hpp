@@ -13,7 +13,7 @@
 
 namespace impactsph {
 
-inline constexpr std::uint32_t kCheckpointVersion = 2;
+inline constexpr std::uint32_t kCheckpointVersion = 3;  // 3: JH-2 bulking pressure per particle
 
 struct CheckpointData {
   ParticleSet particles;

@@ -35,6 +35,16 @@ IMPACTSPH_HD Real johnson_cook_failure_strain(const DamageParams<Real>& d, Real 
   return max_of(stress_part * rate_part * thermal_part, d.min_failure_strain);
 }
 
+// JH-2 plastic strain to fracture (X eq 26): eps_f = D1 (P* + T*)^D2 with P* = P/P_HEL, T* = T/P_HEL,
+// bounded below by EFMIN (min_failure_strain). Where P* + T* <= 0 (at or beyond the tensile limit) the
+// power part is 0, so eps_f = EFMIN: with EFMIN = 0 any plastic flow there fails the particle at once.
+template <class Real>
+IMPACTSPH_HD Real jh2_failure_strain(Real d1, Real d2, Real p_star, Real t_star, Real min_failure_strain) {
+  const Real s = p_star + t_star;
+  const Real power = s > Real(0) ? d1 * std::pow(s, d2) : Real(0);
+  return max_of(power, min_failure_strain);
+}
+
 // Damage increment of one step, to be added to D (the caller keeps D = min(D + increment, 1)):
 //   None: 0;
 //   CriticalPlasticStrain (F eq 4.9): 1 once the plastic strain after the step eps_p_after >= eps_c,
@@ -43,13 +53,21 @@ IMPACTSPH_HD Real johnson_cook_failure_strain(const DamageParams<Real>& d, Real 
 //     triaxiality -P/sigma_eq (P and sigma_eq in Pa), eps_dot* = max(eps_rate/eps_dot0, 1) with the
 //     strength model's reference rate, and T* from the strength model's melt temperature and the
 //     material's room temperature (T in K). 1 when eps_f <= 0 and the step is plastic.
-// No damage without plastic flow (d_eps_p <= 0) in the JohnsonCook model. Dimensionless.
+//   JohnsonHolmquist2 (X eqs 25-26): d_eps_p / eps_f, eps_f of jh2_failure_strain at the pressure P (Pa,
+//     with the bulking increment) and the strength model's P_HEL and T. 1 when eps_f <= 0.
+// No damage without plastic flow (d_eps_p <= 0) in the JohnsonCook and JH-2 models. Dimensionless.
 template <class Real>
 IMPACTSPH_HD Real damage_increment(const MaterialParams<Real>& m, Real d_eps_p, Real eps_p_after, Real P, Real sigma_eq,
                                    Real eps_rate, Real T) {
   if (m.damage.kind == DamageKind::CriticalPlasticStrain)
     return eps_p_after >= m.damage.critical_plastic_strain ? Real(1) : Real(0);
-  if (m.damage.kind != DamageKind::JohnsonCook || !(d_eps_p > Real(0))) return Real(0);
+  if (!(d_eps_p > Real(0))) return Real(0);
+  if (m.damage.kind == DamageKind::JohnsonHolmquist2) {
+    const Real eps_f = jh2_failure_strain(m.damage.d1, m.damage.d2, P / m.strength.p_hel,
+                                          m.strength.tensile_pressure / m.strength.p_hel, m.damage.min_failure_strain);
+    return eps_f > Real(0) ? d_eps_p / eps_f : Real(1);
+  }
+  if (m.damage.kind != DamageKind::JohnsonCook) return Real(0);
   const Real eps_f = johnson_cook_failure_strain(
       m.damage, stress_triaxiality(P, sigma_eq), johnson_cook_rate_ratio(eps_rate, m.strength.reference_strain_rate),
       homologous_temperature(T, m.room_temperature, m.strength.melt_temperature));
@@ -64,6 +82,51 @@ template <class Real> IMPACTSPH_HD void apply_failure(Sym3<Real>& S, Real& P, Re
   if (!(D >= Real(1))) return;
   S = Sym3<Real>::zero();
   P = max_of(P, Real(0));
+}
+
+// What a material may carry at damage D (applied after material_pressure and the plastic return):
+//   JH-2 strength: the pressure is bounded below by the tensile limit, P >= -T (1 - D) (Johnson and
+//     Holmquist 1994: the intact material holds tension up to T, a fully damaged one none); S is left
+//     to the JH-2 flow stress (plastic_update), which falls to the fractured strength at D = 1;
+//   any other model: apply_failure(S, P, D) above.
+template <class Real> IMPACTSPH_HD void apply_failure(const MaterialParams<Real>& m, Sym3<Real>& S, Real& P, Real D) {
+  if (m.strength.kind == StrengthKind::JohnsonHolmquist2) {
+    const Real d = min_of(max_of(D, Real(0)), Real(1));
+    P = max_of(P, -m.strength.tensile_pressure * (Real(1) - d));
+    return;
+  }
+  apply_failure(S, P, D);
+}
+
+// JH-2 bulking (X eq 28; Johnson and Holmquist 1994): when the damage grows from D_old to D_new at the
+// pressure P, the strength falls and the elastic (deviatoric) energy U = sigma_y^2/(6 G) drops by
+// dU = U(D_old) - U(D_new) (J/m^3). A fraction beta of it becomes hydrostatic potential energy through
+// the pressure increment dP, updated by
+//   dP_new = -K1 mu + sqrt((K1 mu + dP_old)^2 + 2 beta K1 dU),
+// the root of (dP_new - dP_old) mu + (dP_new^2 - dP_old^2)/(2 K1) = beta dU (mu = rho/rho0 - 1).
+// Returns dP_new (Pa). dP never decreases: no bulking without a loss of energy (dU <= 0), and none while
+// K1 mu + dP_old < 0 (net tension, where the root jumps to the other branch and the tensile limit of
+// apply_failure governs anyway). Non-JH-2 materials and beta = 0 return dP_old.
+template <class Real>
+IMPACTSPH_HD Real jh2_bulking_increment(const MaterialParams<Real>& m, Real rho, Real P, Real D_old, Real D_new,
+                                        Real eps_rate, Real dP_old) {
+  if (m.damage.kind != DamageKind::JohnsonHolmquist2 || m.strength.kind != StrengthKind::JohnsonHolmquist2 ||
+      !(m.damage.bulking > Real(0)) || !(D_new > D_old))
+    return dP_old;
+  const Real G = m.strength.shear_modulus;
+  const Real s_old = jh2_flow_stress(m.strength, P, eps_rate, D_old);
+  const Real s_new = jh2_flow_stress(m.strength, P, eps_rate, D_new);
+  const Real dU = (s_old * s_old - s_new * s_new) / (Real(6) * G);
+  const Real k1mu = m.eos.k1 * compression(m.eos, rho);
+  const Real a = k1mu + dP_old;
+  if (!(dU > Real(0)) || a < Real(0)) return dP_old;
+  return max_of(dP_old, -k1mu + std::sqrt(a * a + Real(2) * m.damage.bulking * m.eos.k1 * dU));
+}
+
+// Damage a particle brings into the pair factor below: its D when its material scales pairs (F eq 4.10),
+// else 0 (JH-2 ceramics, and metals modelled as in X, carry damage in their constitutive law only).
+template <class Real> IMPACTSPH_HD Real pair_damage(const MaterialParams<Real>& m, Real D) {
+  return m.damage.scale_pairs ? D : Real(0);
 }
 
 // Damaged interaction (F eq 4.10): the kernel and its gradient between i and j are scaled by

@@ -142,12 +142,14 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
   if (o.projectile) {
     obs["residual_velocity"] = o.residual_velocity;
     obs["residual_mass"] = o.residual_mass;
+    obs["eroded_mass"] = o.eroded_mass;
     obs["settled_time"] = o.settled_time >= 0 ? nlohmann::json(o.settled_time) : nlohmann::json(nullptr);
   }
   if (o.target) {
     obs["plug_velocity"] = o.plug_velocity;
     obs["plug_mass"] = o.plug_mass;
     obs["perforated"] = o.perforated;
+    obs["damage_fraction"] = o.damage_fraction;
   }
   j["observables"] = obs;
   j["settled"] = r.settled;

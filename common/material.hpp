@@ -11,13 +11,15 @@ enum class StrengthKind : int {
   Hydrodynamic = 0,       // no deviatoric stress (Hugoniot tests, fluids)
   Elastic = 1,            // Hooke + Jaumann, never yields (elastic projectile, elastic-wave test)
   PerfectlyPlastic = 2,   // Hooke + Jaumann + von Mises at a constant yield stress
-  JohnsonCook = 3         // Hooke + Jaumann + von Mises at the Johnson-Cook flow stress (F 3.12-3.13)
+  JohnsonCook = 3,        // Hooke + Jaumann + von Mises at the Johnson-Cook flow stress (F 3.12-3.13)
+  JohnsonHolmquist2 = 4   // Hooke + Jaumann + von Mises at the JH-2 strength (X eqs 22-24): ceramics
 };
 
 enum class DamageKind : int {
   None = 0,
   CriticalPlasticStrain = 1,  // D = 1 once eps_p >= eps_c (F 4.9)
-  JohnsonCook = 2             // D = sum d eps_p / eps_f, eps_f of F 4.7 bounded below as X eq 33
+  JohnsonCook = 2,            // D = sum d eps_p / eps_f, eps_f of F 4.7 bounded below as X eq 33
+  JohnsonHolmquist2 = 3       // D = sum d eps_p / eps_f, eps_f = D1 (P* + T*)^D2 (X eqs 25-26), bulking
 };
 
 template <class Real>
@@ -31,14 +33,32 @@ struct StrengthParams {
   Real reference_strain_rate = 1;  // eps_dot0, 1/s
   Real melt_temperature = 0;       // T_melt, K (0: no thermal softening)
   Real taylor_quinney = Real(0.9);  // fraction of plastic work that heats (F 3.14)
+  // JH-2 (X eqs 22-24, Table 1): normalised strength constants, the Hugoniot elastic limit HEL (Pa), the
+  // pressure at the HEL P_HEL (Pa), the maximum tensile pressure T (Pa, > 0) and SFMAX, the cap of the
+  // normalised fractured strength (1e30: no cap). The rate reference is reference_strain_rate (EPSI).
+  Real jh_a = 0, jh_b = 0, jh_c = 0, jh_m = 1, jh_n = 1;
+  Real hel = 0, p_hel = 0, tensile_pressure = 0;
+  Real sfmax = Real(1e30);
 };
+
+// Equivalent (von Mises) stress at the HEL, Pa: the HEL is the longitudinal stress of uniaxial strain,
+// HEL = P_HEL + (2/3) sigma_HEL, so sigma_HEL = 3/2 (HEL - P_HEL) (Johnson and Holmquist 1994).
+template <class Real> IMPACTSPH_HD Real jh2_sigma_hel(const StrengthParams<Real>& p) {
+  return Real(1.5) * (p.hel - p.p_hel);
+}
 
 template <class Real>
 struct DamageParams {
   DamageKind kind = DamageKind::None;
   Real critical_plastic_strain = 0;          // eps_c (F 4.9)
   Real d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0;  // Johnson-Cook failure constants (F 4.7)
-  Real min_failure_strain = 0;               // lower bound of eps_f (X eq 33)
+  Real min_failure_strain = 0;               // lower bound of eps_f (X eq 33; JH-2: EFMIN)
+  // JH-2 uses d1, d2 as D1, D2 of X eq 26 and min_failure_strain; bulking is beta of X eq 28, the
+  // fraction of the lost elastic energy converted to hydrostatic potential energy (0 to 1).
+  Real bulking = 0;
+  // Scale the SPH pair terms by 1 - D_ij (F eq 4.10). F's metals do; a JH-2 ceramic carries its damage
+  // in its strength (X eq 22) and comminuted material must still resist compression, so it does not.
+  bool scale_pairs = true;
 };
 
 template <class Real>
@@ -82,6 +102,33 @@ IMPACTSPH_HD Real johnson_cook_yield(const StrengthParams<Real>& p, Real eps_p, 
                                   homologous_temperature(T, T_room, p.melt_temperature));
 }
 
+// JH-2 flow stress, Pa: sigma_HEL sigma*(P, D, eps_dot) with sigma* of X eqs 22-24 (strength.hpp), at
+// the pressure P (Pa, the EOS pressure plus the bulking increment), damage D and the equivalent strain
+// rate eps_rate (1/s).
+template <class Real>
+IMPACTSPH_HD Real jh2_flow_stress(const StrengthParams<Real>& p, Real P, Real eps_rate, Real D) {
+  const Real rate = johnson_cook_rate_ratio(eps_rate, p.reference_strain_rate);
+  const Real p_star = P / p.p_hel, t_star = p.tensile_pressure / p.p_hel;
+  const Real intact = jh2_intact_strength(p.jh_a, p.jh_n, p.jh_c, p_star, t_star, rate);
+  const Real fractured = jh2_fractured_strength(p.jh_b, p.jh_m, p.jh_c, p_star, rate, p.sfmax);
+  return jh2_sigma_hel(p) * jh2_damaged_strength(intact, fractured, D);
+}
+
+// Whether the flow stress depends on the pressure (then plastic_update wants it).
+template <class Real> IMPACTSPH_HD bool strength_needs_pressure(const MaterialParams<Real>& m) {
+  return m.strength.kind == StrengthKind::JohnsonHolmquist2;
+}
+
+// Pressure of a material, Pa: the EOS pressure (eos.hpp) plus, for a JH-2 ceramic, the bulking increment
+// dP_bulk (Pa; X eq 28, kept per particle and grown by jh2_bulking_increment in damage.hpp). The tensile
+// limit and what failed particles carry are applied afterwards by apply_failure(m, ...) (damage.hpp).
+// sound_speed is the EOS bulk sound speed (m/s).
+template <class Real>
+IMPACTSPH_HD Real material_pressure(const MaterialParams<Real>& m, Real rho, Real e, Real dP_bulk, Real& sound_speed) {
+  const Real P = eos_pressure(m.eos, rho, e, sound_speed);
+  return m.strength.kind == StrengthKind::JohnsonHolmquist2 ? P + dP_bulk : P;
+}
+
 // What one plastic step did to a particle.
 template <class Real>
 struct PlasticResult {
@@ -98,25 +145,31 @@ struct PlasticResult {
 //     start of the increment. This explicit choice (no iteration for the hardening within the step) is
 //     the usual hydrocode one; the returned von Mises stress lags the hardened flow stress by
 //     d sigma_y/d eps_p x d_eps_p, an error of first order in the step.
+//   JohnsonHolmquist2: sigma_y = jh2_flow_stress at the pressure P (Pa), the damage and eps_rate; the
+//     damage softens the strength towards the fractured strength (X eq 22) instead of failing the
+//     particle, so a JH-2 particle keeps its (fractured) strength at D = 1.
 // After the return von_mises(S) = sigma_y and d_eps_p = (seq_trial - sigma_y)/(3 G). The plastic work per
 // unit mass is S:d eps_pl / rho = sigma_y d_eps_p / rho (J/kg; rho in kg/m^3), and the adiabatic heating
 // (F eq 3.14) d_T = taylor_quinney sigma_y d_eps_p / (rho c_p), zero when specific_heat is 0 (temperature
-// not tracked). A fully failed particle (damage >= 1) carries no deviatoric stress: S is set to zero and
-// no plastic strain or heat is counted (the same rule as apply_failure in damage.hpp). Partial damage
-// (damage < 1) leaves the flow stress unchanged: in F it acts through the pair kernel factor (F eq 4.10).
+// not tracked). A fully failed particle (damage >= 1) of any other model carries no deviatoric stress: S
+// is set to zero and no plastic strain or heat is counted (the same rule as apply_failure in damage.hpp).
+// Partial damage (damage < 1) leaves the Johnson-Cook flow stress unchanged: in F it acts through the
+// pair kernel factor (F eq 4.10).
 template <class Real>
 IMPACTSPH_HD PlasticResult<Real> plastic_update(const MaterialParams<Real>& m, Sym3<Real>& S, Real eps_p, Real eps_rate,
-                                                Real T, Real rho, Real damage) {
+                                                Real T, Real rho, Real damage, Real P) {
   PlasticResult<Real> r{Real(0), Real(0), Real(0)};
   Real sigma_y;
   if (m.strength.kind == StrengthKind::PerfectlyPlastic) {
     sigma_y = m.strength.yield_stress;
   } else if (m.strength.kind == StrengthKind::JohnsonCook) {
     sigma_y = johnson_cook_yield(m.strength, eps_p, eps_rate, T, m.room_temperature);
+  } else if (m.strength.kind == StrengthKind::JohnsonHolmquist2) {
+    sigma_y = jh2_flow_stress(m.strength, P, eps_rate, damage);
   } else {
     return r;
   }
-  if (damage >= Real(1)) {
+  if (damage >= Real(1) && m.strength.kind != StrengthKind::JohnsonHolmquist2) {
     S = Sym3<Real>::zero();
     return r;
   }
@@ -124,6 +177,20 @@ IMPACTSPH_HD PlasticResult<Real> plastic_update(const MaterialParams<Real>& m, S
   if (rho > Real(0)) r.plastic_work = sigma_y * r.d_eps_p / rho;
   if (m.specific_heat > Real(0)) r.d_T = m.strength.taylor_quinney * r.plastic_work / m.specific_heat;
   return r;
+}
+
+// The same without the pressure: a pressure-dependent model (JH-2) takes the EOS pressure at rho and
+// e = 0, which is exact for the polynomial EOS of JH-2 except for the bulking increment. Solvers that
+// track bulking pass the pressure to the overload above.
+template <class Real>
+IMPACTSPH_HD PlasticResult<Real> plastic_update(const MaterialParams<Real>& m, Sym3<Real>& S, Real eps_p, Real eps_rate,
+                                                Real T, Real rho, Real damage) {
+  Real P = Real(0);
+  if (strength_needs_pressure(m)) {
+    Real c;
+    P = eos_pressure(m.eos, rho, Real(0), c);
+  }
+  return plastic_update(m, S, eps_p, eps_rate, T, rho, damage, P);
 }
 
 // Plastic correction after the elastic stress update; returns the equivalent plastic strain increment.

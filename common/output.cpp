@@ -249,6 +249,7 @@ void FrameSeriesWriter::write_frame(double time, std::int64_t index, const Parti
   point_data += tag("Float64", "plastic_strain", 1, data.add(p.plastic_strain.data(), n));
   point_data += tag("Float64", "damage", 1, data.add(p.damage.data(), n));
   point_data += tag("Float64", "temperature", 1, data.add(p.temperature.data(), n));
+  point_data += tag("Float64", "bulking_pressure", 1, data.add(p.bulking_pressure.data(), n));
   point_data += tag("Float64", "internal_energy", 1, data.add(p.energy.data(), n));
   point_data += tag("Float64", "smoothing_length", 1, data.add(p.h.data(), n));
   point_data += tag("Float64", "mass", 1, data.add(p.mass.data(), n));

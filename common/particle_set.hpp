@@ -25,6 +25,7 @@ struct ParticleSet {
   std::vector<double> plastic_strain; // equivalent plastic strain
   std::vector<double> damage;         // D in [0, 1]
   std::vector<double> temperature;    // K, raised by plastic work (F 3.14)
+  std::vector<double> bulking_pressure; // Pa, JH-2 bulking increment dP (X eq 28); 0 for other materials
   std::vector<std::int32_t> body;     // index into Scene::bodies
   std::vector<std::int32_t> material; // index into Scene::materials
   std::vector<std::uint8_t> fixed;    // 1: clamped (velocity held at zero)
@@ -33,7 +34,7 @@ struct ParticleSet {
   void resize(std::size_t n) {
     pos.resize(n); vel.resize(n); mass.resize(n); rho.resize(n); energy.resize(n); pressure.resize(n);
     h.resize(n); dev_stress.resize(n); plastic_strain.resize(n); damage.resize(n);
-    temperature.resize(n); body.resize(n);
+    temperature.resize(n); bulking_pressure.resize(n); body.resize(n);
     material.resize(n); fixed.resize(n);
   }
 };

@@ -467,6 +467,7 @@ Scene build_scene(const CaseSpec& spec) {
       ps.plastic_strain[p] = 0;
       ps.damage[p] = 0;
       ps.temperature[p] = mat.room_temperature;
+      ps.bulking_pressure[p] = 0;
       ps.body[p] = static_cast<std::int32_t>(k);
       ps.material[p] = b.material_index;
       ps.fixed[p] = 0;

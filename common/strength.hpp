@@ -81,4 +81,34 @@ IMPACTSPH_HD Real johnson_cook_flow_stress(Real a, Real b, Real n, Real c, Real 
   return max_of(hardening * rate * thermal, Real(0));
 }
 
+// Johnson-Holmquist 2 (JH-2) normalised strengths (X eqs 23-24; Johnson and Holmquist 1994). All are
+// normalised by the equivalent stress at the Hugoniot elastic limit, sigma_HEL, and take the normalised
+// pressure P* = P/P_HEL, the normalised maximum tensile pressure T* = T/P_HEL and the normalised strain
+// rate eps_dot* (johnson_cook_rate_ratio: at least 1, so ln eps_dot* >= 0). Dimensionless.
+//   intact    sigma_i* = A (P* + T*)^N (1 + C ln eps_dot*), 0 where P* + T* <= 0 (no strength at or
+//             beyond the tensile limit);
+//   fractured sigma_f* = B (P*)^M (1 + C ln eps_dot*), at most SFMAX, 0 where P* <= 0 (a comminuted
+//             ceramic has no strength without confinement);
+//   damaged   sigma* = sigma_i* - D (sigma_i* - sigma_f*) (X eq 22), D in [0, 1].
+// pow is never called at 0 or below. A rate factor below 0 (C < 0) gives 0.
+template <class Real>
+IMPACTSPH_HD Real jh2_rate_factor(Real c, Real eps_rate_star) {
+  return eps_rate_star > Real(1) ? max_of(Real(1) + c * std::log(eps_rate_star), Real(0)) : Real(1);
+}
+template <class Real>
+IMPACTSPH_HD Real jh2_intact_strength(Real a, Real n, Real c, Real p_star, Real t_star, Real eps_rate_star) {
+  const Real s = p_star + t_star;
+  if (!(s > Real(0))) return Real(0);
+  return a * std::pow(s, n) * jh2_rate_factor(c, eps_rate_star);
+}
+template <class Real>
+IMPACTSPH_HD Real jh2_fractured_strength(Real b, Real m, Real c, Real p_star, Real eps_rate_star, Real sfmax) {
+  if (!(p_star > Real(0))) return Real(0);
+  return min_of(b * std::pow(p_star, m) * jh2_rate_factor(c, eps_rate_star), sfmax);
+}
+template <class Real> IMPACTSPH_HD Real jh2_damaged_strength(Real intact, Real fractured, Real D) {
+  const Real d = min_of(max_of(D, Real(0)), Real(1));
+  return intact - d * (intact - fractured);
+}
+
 }  // namespace impactsph

@@ -12,6 +12,7 @@
 #include "common/errors.hpp"
 #include "common/kernels.hpp"
 #include "common/pair_terms.hpp"
+#include "common/smoothing_length.hpp"
 #include "common/material.hpp"
 #include "common/timestep.hpp"
 #include "common/viscosity.hpp"
@@ -45,7 +46,14 @@ ReferenceSolver::ReferenceSolver(const Scene& scene)
     const std::size_t a = static_cast<std::size_t>(c.index_a), b = static_cast<std::size_t>(c.index_b);
     contact_of_pair_[a * body_count_ + b] = &c;
     contact_of_pair_[b * body_count_ + a] = &c;
-    contact_reach_ = std::max(contact_reach_, c.contact_distance * numerics_.spacing);
+    if (c.srad > 0) contact_srad_ = std::max(contact_srad_, c.srad);
+    else contact_reach_ = std::max(contact_reach_, c.contact_distance * numerics_.spacing);
+  }
+  const double h0 = numerics_.h_factor * numerics_.spacing;
+  for (const BodySpec& b : scene.spec.bodies) {
+    body_variable_h_.push_back(b.variable_h ? 1 : 0);
+    body_h_lo_.push_back(b.h_min_factor * h0);
+    body_h_hi_.push_back(b.h_max_factor * h0);
   }
 }
 
@@ -92,14 +100,17 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   x_.resize(total); v_.resize(total); rho_.resize(total); pressure_.resize(total); sound_speed_.resize(total);
   m_.resize(total); hh_.resize(total); mat_.resize(total); s_over_rho2_.resize(total); l_inverse_.resize(total);
   grad_rho_.resize(total); grad_v_.resize(n); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
+  pair_damage_.resize(total);
   std::vector<Sym3d>& stress = stress_;
   stress.resize(total);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < ni; ++i) {
     x_[i] = y.pos[i]; v_[i] = y.vel[i]; rho_[i] = y.rho[i]; m_[i] = mass_[i]; hh_[i] = h_[i];
     mat_[i] = material_[i]; stress[i] = y.dev_stress[i]; bb_[i] = body_[i]; damage_all_[i] = damage_[i];
-    pressure_[i] = eos_pressure(materials_[static_cast<std::size_t>(mat_[i])].eos, rho_[i], y.energy[i], sound_speed_[i]);
-    apply_failure(stress[i], pressure_[i], damage_all_[i]);  // a failed particle: no deviator, no tension
+    const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(mat_[i])];
+    pressure_[i] = material_pressure(mat, rho_[i], y.energy[i], bulking_[i], sound_speed_[i]);
+    apply_failure(mat, stress[i], pressure_[i], damage_all_[i]);  // failed: no deviator, no tension (JH-2: limit)
+    pair_damage_[i] = pair_damage(mat, damage_all_[i]);
   }
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
     const Ghost& g = ghosts_[k];
@@ -108,6 +119,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     v_[i] = hadamard(g.sign, y.vel[s]);
     rho_[i] = rho_[s]; m_[i] = m_[s]; hh_[i] = hh_[s]; mat_[i] = mat_[s]; bb_[i] = bb_[s];
     damage_all_[i] = damage_all_[s];
+    pair_damage_[i] = pair_damage_[s];
     pressure_[i] = pressure_[s]; sound_speed_[i] = sound_speed_[s];
     stress[i] = mirror(stress[s], g.sign);
   }
@@ -190,8 +202,10 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
         const MaterialParams<double>& mat_i = materials_[static_cast<std::size_t>(mi)];
         const MaterialParams<double>& mat_j = materials_[static_cast<std::size_t>(mat_[j])];
         const Vec3d vij = vi - v_[j];
+        // X eqs 18, 20: touching at SRAD (h_i + h_j)/2, or at a fixed number of spacings.
+        const double touch = c->srad > 0 ? c->srad * 0.5 * (hi + hh_[j]) : c->contact_distance * numerics_.spacing;
         const Vec3d force = penalty_contact_force(PenaltyContactParams<double>{c->penalty_scale}, xij, vij,
-                                                  c->contact_distance * numerics_.spacing, m_[i], m_[j], hi, hh_[j],
+                                                  touch, m_[i], m_[j], hi, hh_[j],
                                                   mat_i.strength.shear_modulus, mat_j.strength.shear_modulus, rhoi,
                                                   rho_[j], dt);
         contact += force;
@@ -220,7 +234,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
 }
 
 PairSide<double> ReferenceSolver::pair_side(std::size_t i) const {
-  return {s_over_rho2_[i].full(), l_inverse_[i], damage_all_[i], av_factor_[i], sound_speed_[i], rho_[i]};
+  return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i]};
 }
 
 void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {
@@ -241,9 +255,16 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
     out.energy[i] = y0.energy[i] + dt * f.denergy[i];
     // Trial stress, then the plastic return at the history variables of the step start.
     Sym3d s = y0.dev_stress[i] + dt * f.dstress[i];
-    const PlasticResult<double> pr = plastic_update(materials_[static_cast<std::size_t>(material_[i])], s,
-                                                    plastic_strain_[i], f.strain_rate[i], temperature_[i],
-                                                    out.rho[i], damage_[i]);
+    const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(material_[i])];
+    double P = 0;
+    if (strength_needs_pressure(mat)) {  // JH-2: the flow stress at the pressure of the new state
+      double c = 0;
+      Sym3d unused = s;
+      P = material_pressure(mat, out.rho[i], out.energy[i], bulking_[i], c);
+      apply_failure(mat, unused, P, damage_[i]);
+    }
+    const PlasticResult<double> pr =
+        plastic_update(mat, s, plastic_strain_[i], f.strain_rate[i], temperature_[i], out.rho[i], damage_[i], P);
     out.dev_stress[i] = s;
     if (history) {
       history->d_eps_p[i] = pr.d_eps_p;
@@ -273,11 +294,12 @@ void ReferenceSolver::check_state(const State& y, double dt) const {
 void ReferenceSolver::load_constants(const ParticleSet& p) {
   mass_ = p.mass; h_ = p.h; material_ = p.material; fixed_ = p.fixed; body_ = p.body;
   damage_ = p.damage; plastic_strain_ = p.plastic_strain; temperature_ = p.temperature;
+  bulking_ = p.bulking_pressure;
   h_max_ = p.size() ? *std::max_element(h_.begin(), h_.end()) : 0.0;
 }
 
 void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double skin) {
-  const double support = std::max(kernel_support(h_max_), contact_reach_);
+  const double support = std::max({kernel_support(h_max_), contact_reach_, contact_srad_ * h_max_});
   find_ghosts(pos, support + skin);
   std::vector<Vec3d> points(pos);
   points.reserve(pos.size() + ghosts_.size());
@@ -330,8 +352,28 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
     const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
-    finish_step(mat, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i], p.temperature[i], p.damage[i],
-                p.pressure[i], history.d_eps_p[i], history.d_temperature[i], history.strain_rate[i]);
+    p.plastic_strain[i] += history.d_eps_p[i];
+    p.temperature[i] += history.d_temperature[i];
+    double c = 0;
+    p.pressure[i] = material_pressure(mat, p.rho[i], p.energy[i], p.bulking_pressure[i], c);
+    apply_failure(mat, p.dev_stress[i], p.pressure[i], p.damage[i]);  // JH-2: P at the tensile limit
+    if (p.damage[i] < 1.0) {
+      const double d_old = p.damage[i];
+      const double dd = damage_increment(mat, history.d_eps_p[i], p.plastic_strain[i], p.pressure[i],
+                                         von_mises(p.dev_stress[i]), history.strain_rate[i], p.temperature[i]);
+      p.damage[i] = std::min(1.0, p.damage[i] + dd);
+      // JH-2 bulking (X eq 28): the strength lost with the damage becomes a pressure increment.
+      p.bulking_pressure[i] = jh2_bulking_increment(mat, p.rho[i], p.pressure[i], d_old, p.damage[i],
+                                                    history.strain_rate[i], p.bulking_pressure[i]);
+      if (p.bulking_pressure[i] != bulking_[i])
+        p.pressure[i] = material_pressure(mat, p.rho[i], p.energy[i], p.bulking_pressure[i], c);
+    }
+    apply_failure(mat, p.dev_stress[i], p.pressure[i], p.damage[i]);
+    // Variable smoothing length (X eqs 9-10): dh/dt = (1/3) h div v, within the body's bounds.
+    const std::size_t b = static_cast<std::size_t>(p.body[i]);
+    if (body_variable_h_[b])
+      p.h[i] = advance_smoothing_length(p.h[i], grad_v_[static_cast<std::size_t>(i)].trace(), dt, body_h_lo_[b],
+                                        body_h_hi_[b]);
   }
 }
 

@@ -91,12 +91,17 @@ class ReferenceSolver final : public Stepper {
   std::vector<Sym3d> s_over_rho2_;  // (S - P I) / rho^2 stored as a symmetric tensor
   std::vector<Mat3d> l_inverse_;
   std::vector<Mat3d> grad_v_;       // real particles only
-  std::vector<double> damage_, plastic_strain_, temperature_;  // history variables at the step start
+  std::vector<double> damage_, plastic_strain_, temperature_, bulking_;  // history variables at the step start
   std::vector<std::int32_t> bb_;    // body of reals and ghosts
   std::vector<double> damage_all_;  // damage of reals and ghosts
   std::size_t body_count_ = 0;
   std::vector<const ContactSpec*> contact_of_pair_;  // penalty contact of a body pair, or null (shared sums)
-  double contact_reach_ = 0;        // largest penalty contact distance, m
+  double contact_reach_ = 0;        // largest penalty contact distance in spacings, m
+  double contact_srad_ = 0;         // largest SRAD of the penalty contacts (reach srad x largest h)
+  std::vector<double> pair_damage_; // damage each particle brings into the pair factor (reals and ghosts)
+  // Variable smoothing length per body (X eqs 9-10): on/off and the bounds in m.
+  std::vector<std::uint8_t> body_variable_h_;
+  std::vector<double> body_h_lo_, body_h_hi_;
   std::vector<Sym3d> stress_;       // deviatoric stress of reals and ghosts
   // Stage states and rates, kept between steps so that a step allocates nothing.
   State y0_, y_half_, y1_;

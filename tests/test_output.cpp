@@ -166,8 +166,8 @@ TEST_F(OutputTest, VtuIsWellFormedAndCarriesEveryField) {
   EXPECT_NE(file.find("Name=\"TIME\" NumberOfTuples=\"1\" format=\"ascii\">1.25e-05<"), std::string::npos);
 
   for (const char* field : {"velocity", "speed", "density", "pressure", "von_mises", "plastic_strain", "damage",
-                            "temperature", "internal_energy", "smoothing_length", "mass", "body_id", "fixed",
-                            "Points", "connectivity", "offsets", "types"})
+                            "temperature", "bulking_pressure", "internal_energy", "smoothing_length", "mass",
+                            "body_id", "fixed", "Points", "connectivity", "offsets", "types"})
     EXPECT_NE(file.find("Name=\"" + std::string(field) + "\""), std::string::npos) << field;
 
   EXPECT_EQ(appended_array(file, "density"), bytes_of(p.rho));
