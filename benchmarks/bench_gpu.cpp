@@ -16,6 +16,7 @@
 
 #include "common/case_file.hpp"
 #include "common/scene.hpp"
+#include "benchmarks/block_scene.hpp"
 #include "gpu/solver.hpp"
 #include "reference/solver.hpp"
 
@@ -23,25 +24,8 @@ namespace {
 
 using namespace impactsph;
 
-Scene block(int n) {
-  std::ostringstream toml;
-  toml << "[case]\nname = \"block\"\n"
-          "[materials.steel]\ndensity = \"7850 kg/m^3\"\n"
-          "eos = { kind = \"linear\", bulk_modulus = \"196 GPa\" }\n"
-          "strength = { kind = \"elastic\", shear_modulus = \"75 GPa\" }\n"
-          "[[bodies]]\nname = \"block\"\nmaterial = \"steel\"\nshape = \"box\"\n"
-          "min = [\"0 mm\", \"0 mm\", \"0 mm\"]\nmax = [\""
-       << n << " mm\", \"" << n << " mm\", \"" << n
-       << " mm\"]\n[numerics]\nspacing = \"1 mm\"\nh_factor = 1.2\n[time]\nend = \"1 us\"\noutput_interval = \"1 us\"\n";
-  Scene scene = build_scene(parse_case_string(toml.str(), "benchmark-block.toml"));
-  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-    const Vec3d& x = scene.particles.pos[i];
-    scene.particles.vel[i] = Vec3d{std::sin(300 * x.y), std::cos(200 * x.z), std::sin(250 * x.x)};
-  }
-  return scene;
-}
-
-int side(const benchmark::State& state) { return static_cast<int>(std::lround(std::cbrt(double(state.range(0))))); }
+using bench::block;
+using bench::side;
 
 // CPU seconds of all threads of the process.
 double process_cpu_seconds() {
