@@ -23,6 +23,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "app/scoped_signals.hpp"
 #include "app/gnuplot.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
@@ -80,25 +81,6 @@ extern "C" void on_search_stop(int sig) {
     std::raise(sig);
   }
 }
-
-class SearchSignals {
- public:
-  SearchSignals() {
-    g_stop.store(0);
-    old_int_ = std::signal(SIGINT, on_search_stop);
-    old_term_ = std::signal(SIGTERM, on_search_stop);
-  }
-  ~SearchSignals() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-  }
-  SearchSignals(const SearchSignals&) = delete;
-  SearchSignals& operator=(const SearchSignals&) = delete;
-
- private:
-  void (*old_int_)(int);
-  void (*old_term_)(int);
-};
 
 bool stop_requested() { return g_stop.load() != 0; }
 
@@ -271,7 +253,7 @@ Run run_one(const Search& s, double v, int threads) {
     ro.quiet = true;
     ro.threads = threads;
     ro.fingerprint = "ballistic-limit " + sets.back();
-    ro.install_signal_handlers = false;  // process-wide; the search handles Ctrl-C (SearchSignals)
+    ro.install_signal_handlers = false;  // process-wide; the search handles Ctrl-C (ScopedSignals below)
     // summary.json records the single run this stands for.
     ro.command_line = {"impactsph", "run", s.opt.case_file};
     if (!s.opt.spacing.empty()) ro.command_line.insert(ro.command_line.end(), {"--spacing", s.opt.spacing});
@@ -728,7 +710,8 @@ int ballistic_limit_command(const BallisticOptions& opt) {
     std::fflush(stdout);
   }
 
-  SearchSignals signals;
+  g_stop.store(0);
+  const ScopedSignals signals(on_search_stop);
   auto add = [&](std::vector<Run> batch) {
     for (Run& r : batch) s.runs.push_back(std::move(r));
   };

@@ -26,6 +26,7 @@
 #include <thread>
 #include <toml++/toml.h>
 
+#include "app/scoped_signals.hpp"
 #include "app/run_args.hpp"
 #include "common/case_file.hpp"
 #include "common/errors.hpp"
@@ -437,25 +438,6 @@ void write_record(const SweepRun& r, const fs::path& dir, const std::string& sta
 std::atomic<int> g_signals{0};
 extern "C" void on_sweep_signal(int) { g_signals.fetch_add(1); }
 
-class SweepSignals {
- public:
-  SweepSignals() {
-    g_signals.store(0);
-    old_int_ = std::signal(SIGINT, on_sweep_signal);
-    old_term_ = std::signal(SIGTERM, on_sweep_signal);
-  }
-  ~SweepSignals() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-  }
-  SweepSignals(const SweepSignals&) = delete;
-  SweepSignals& operator=(const SweepSignals&) = delete;
-
- private:
-  void (*old_int_)(int);
-  void (*old_term_)(int);
-};
-
 std::string this_executable() {
   std::error_code ec;
   const fs::path p = fs::read_symlink("/proc/self/exe", ec);
@@ -771,7 +753,8 @@ int sweep_command(const SweepOptions& opt) {
                 skipped_failed > 1 ? "s" : "", skipped_failed > 1 ? "are" : "is");
   std::fflush(stdout);
 
-  SweepSignals signals;
+  g_signals.store(0);
+  const ScopedSignals signals(on_sweep_signal);
   struct Running {
     const SweepRun* run;
     pid_t pid;
