@@ -44,23 +44,50 @@ IMPACTSPH_HD Real advance_density(const MaterialParams<Real>& m, Real rho0, Real
   return rho_floor < rho ? rho : rho_floor;  // a NaN density stays NaN, for the divergence check
 }
 
-// End of a step for one particle (F 4.7-4.9): accumulate the plastic strain and heating of the final
-// stage, recompute the pressure (Pa) from the EOS, add the damage increment (D capped at 1), and strip a
-// failed particle of its deviator and tension (apply_failure).
+// Trial stress S (Pa) -> plastic return at the history variables of the step start (plastic strain
+// eps_p, temperature T in K, damage D) and the strain rate eps_rate (1/s) of the evaluation. A
+// pressure-dependent strength (JH-2) takes the pressure of the new state: material_pressure at rho
+// (kg/m^3), e (J/kg) and the bulking increment dP_bulk (Pa), bounded by the tensile limit at D.
+template <class Real>
+IMPACTSPH_HD PlasticResult<Real> trial_plastic_return(const MaterialParams<Real>& mat, Sym3<Real>& S, Real eps_p,
+                                                      Real eps_rate, Real T, Real rho, Real e, Real dP_bulk,
+                                                      Real D) {
+  Real P = 0;
+  if (strength_needs_pressure(mat)) {
+    Real c = 0;
+    Sym3<Real> unused = S;
+    P = material_pressure(mat, rho, e, dP_bulk, c);
+    apply_failure(mat, unused, P, D);
+  }
+  return plastic_update(mat, S, eps_p, eps_rate, T, rho, D, P);
+}
+
+// End of a step for one particle (F 4.7-4.9, X eq 28): accumulate the plastic strain and heating of the
+// final stage, recompute the pressure (Pa) from the EOS and the bulking increment dP_bulk, bound it as
+// the material carries it at its damage (apply_failure), add the damage increment (D capped at 1), grow
+// the JH-2 bulking increment with the strength the damage took (the strength lost becomes pressure),
+// and strip a failed particle of what it no longer carries. strain_rate in 1/s.
 template <class Real>
 IMPACTSPH_HD void finish_step(const MaterialParams<Real>& mat, Real rho, Real energy, Sym3<Real>& S, Real& plastic_strain,
-                              Real& temperature, Real& damage, Real& pressure, Real d_eps_p, Real d_temperature,
-                              Real strain_rate) {
+                              Real& temperature, Real& damage, Real& pressure, Real& dP_bulk, Real d_eps_p,
+                              Real d_temperature, Real strain_rate) {
   plastic_strain += d_eps_p;
   temperature += d_temperature;
   Real c = 0;
-  pressure = eos_pressure(mat.eos, rho, energy, c);
+  pressure = material_pressure(mat, rho, energy, dP_bulk, c);
+  apply_failure(mat, S, pressure, damage);
   if (damage < Real(1)) {
+    const Real d_old = damage;
     const Real dd = damage_increment(mat, d_eps_p, plastic_strain, pressure, von_mises(S), strain_rate, temperature);
     const Real d = damage + dd;
     damage = d < Real(1) ? d : Real(1);
+    const Real bulking = jh2_bulking_increment(mat, rho, pressure, d_old, damage, strain_rate, dP_bulk);
+    if (bulking != dP_bulk) {
+      dP_bulk = bulking;
+      pressure = material_pressure(mat, rho, energy, dP_bulk, c);
+    }
   }
-  apply_failure(S, pressure, damage);
+  apply_failure(mat, S, pressure, damage);
 }
 
 }  // namespace impactsph

@@ -70,6 +70,37 @@ struct MaterialParams {
   Real room_temperature = 293;  // K, the temperature at e = 0
 };
 
+// The same constants in another precision (the gpu port's float build takes the double ones of the
+// scene). Every field is listed by name, so a constant added to a struct above must be added here.
+template <class To, class From> MaterialParams<To> convert_material(const MaterialParams<From>& m) {
+  MaterialParams<To> r;
+  const EosParams<From>& e = m.eos;
+  r.eos.kind = e.kind;
+  r.eos.rho0 = To(e.rho0); r.eos.k1 = To(e.k1); r.eos.k2 = To(e.k2); r.eos.k3 = To(e.k3); r.eos.c0 = To(e.c0);
+  r.eos.s1 = To(e.s1); r.eos.s2 = To(e.s2); r.eos.s3 = To(e.s3); r.eos.gamma0 = To(e.gamma0); r.eos.a = To(e.a);
+  const StrengthParams<From>& s = m.strength;
+  r.strength.kind = s.kind;
+  r.strength.shear_modulus = To(s.shear_modulus); r.strength.yield_stress = To(s.yield_stress);
+  r.strength.jc_a = To(s.jc_a); r.strength.jc_b = To(s.jc_b); r.strength.jc_n = To(s.jc_n);
+  r.strength.jc_c = To(s.jc_c); r.strength.jc_m = To(s.jc_m);
+  r.strength.reference_strain_rate = To(s.reference_strain_rate);
+  r.strength.melt_temperature = To(s.melt_temperature); r.strength.taylor_quinney = To(s.taylor_quinney);
+  r.strength.jh_a = To(s.jh_a); r.strength.jh_b = To(s.jh_b); r.strength.jh_c = To(s.jh_c);
+  r.strength.jh_m = To(s.jh_m); r.strength.jh_n = To(s.jh_n);
+  r.strength.hel = To(s.hel); r.strength.p_hel = To(s.p_hel); r.strength.tensile_pressure = To(s.tensile_pressure);
+  r.strength.sfmax = To(s.sfmax);
+  const DamageParams<From>& d = m.damage;
+  r.damage.kind = d.kind;
+  r.damage.critical_plastic_strain = To(d.critical_plastic_strain);
+  r.damage.d1 = To(d.d1); r.damage.d2 = To(d.d2); r.damage.d3 = To(d.d3); r.damage.d4 = To(d.d4); r.damage.d5 = To(d.d5);
+  r.damage.min_failure_strain = To(d.min_failure_strain);
+  r.damage.bulking = To(d.bulking);
+  r.damage.scale_pairs = d.scale_pairs;
+  r.specific_heat = To(m.specific_heat);
+  r.room_temperature = To(m.room_temperature);
+  return r;
+}
+
 template <class Real> IMPACTSPH_HD bool has_deviatoric_stress(const MaterialParams<Real>& m) {
   return m.strength.kind != StrengthKind::Hydrodynamic;
 }

@@ -40,6 +40,7 @@
 #include "common/integration.hpp"
 #include "common/kernels.hpp"
 #include "common/pair_terms.hpp"
+#include "common/smoothing_length.hpp"
 #include "common/timestep.hpp"
 #include "gpu/launch.hpp"
 #include "gpu/solver.hpp"
@@ -132,7 +133,16 @@ template <class Real>
 struct PairContact {
   int penalty;
   Real scale;     // K_p
-  Real distance;  // contact distance, m
+  Real distance;  // contact distance, m (when srad is 0)
+  Real srad;      // > 0: the particles touch at srad (h_i + h_j)/2 instead (X eqs 18, 20)
+  IMPACTSPH_GPU_HD Real touch(Real h_i, Real h_j) const { return srad > Real(0) ? srad * Real(0.5) * (h_i + h_j) : distance; }
+};
+
+// Variable smoothing length of a body (X eqs 9-10): on or off, and the bounds of h (m).
+template <class Real>
+struct BodySmoothing {
+  int variable;
+  Real h_lo, h_hi;
 };
 
 template <class Real>
@@ -256,11 +266,11 @@ template <class Real>
 class Solver final : public GpuStepper {
  public:
   static constexpr bool kFlush = sizeof(Real) < sizeof(double);  // float: subnormals to zero (launch.hpp)
+  static constexpr int kHostScalars = 8;  // scalar fields copied back to the host (download)
   Solver(const Scene& scene, const char* build) : numerics_(scene.spec.numerics) {
     const bool dbl = sizeof(Real) == sizeof(double);
     name_ = std::string("gpu port (") + (dbl ? "double" : "float") + ", " + build + ")";
     for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
-    reject_unported(scene);
     if (scene.spec.symmetry.size() > static_cast<std::size_t>(kMaxPlanes))
       throw std::runtime_error("the gpu port handles at most 6 symmetry planes");
     params_.kernel = numerics_.kernel;
@@ -279,19 +289,29 @@ class Solver final : public GpuStepper {
       params_.planes[k] = Plane{plane.axis, plane.position, side >= 0 ? 1.0 : -1.0};
     }
     std::vector<MaterialParams<Real>> mats;
-    for (const MaterialParams<double>& m : scene.materials) mats.push_back(convert(m));
+    for (const MaterialParams<double>& m : scene.materials) mats.push_back(convert_material<Real>(m));
     materials_ = mats;
     const std::size_t bc = scene.bodies.size();
-    std::vector<PairContact<Real>> table(bc * bc, PairContact<Real>{0, Real(0), Real(0)});
+    std::vector<PairContact<Real>> table(bc * bc, PairContact<Real>{0, Real(0), Real(0), Real(0)});
     for (const ContactSpec& c : scene.spec.contacts) {
       if (c.kind != ContactSpec::Kind::Penalty) continue;
       const double distance = c.contact_distance * numerics_.spacing;
-      const PairContact<Real> pc{1, static_cast<Real>(c.penalty_scale), static_cast<Real>(distance)};
+      const PairContact<Real> pc{1, static_cast<Real>(c.penalty_scale), static_cast<Real>(distance),
+                                 static_cast<Real>(c.srad)};
       table[static_cast<std::size_t>(c.index_a) * bc + static_cast<std::size_t>(c.index_b)] = pc;
       table[static_cast<std::size_t>(c.index_b) * bc + static_cast<std::size_t>(c.index_a)] = pc;
-      contact_reach_ = std::max(contact_reach_, distance);
+      if (c.srad > 0) contact_srad_ = std::max(contact_srad_, c.srad);
+      else contact_reach_ = std::max(contact_reach_, distance);
     }
     contacts_ = table;
+    const double h0 = numerics_.h_factor * numerics_.spacing;
+    std::vector<BodySmoothing<Real>> smoothing;
+    for (const BodySpec& b : scene.spec.bodies) {
+      smoothing.push_back(BodySmoothing<Real>{b.variable_h ? 1 : 0, static_cast<Real>(b.h_min_factor * h0),
+                                              static_cast<Real>(b.h_max_factor * h0)});
+      variable_h_ = variable_h_ || b.variable_h;
+    }
+    body_smoothing_ = smoothing;
   }
 
   std::string name() const override { return name_; }
@@ -329,11 +349,11 @@ class Solver final : public GpuStepper {
     return static_cast<double>(dt);
   }
 
-  // Also marks the particles for a sort before the next step: a run restarted from what the host now holds
-  // starts with a sort of the same state, so both continue with the same order and the same bits.
+  // The lists sum each particle's pairs in an order that does not depend on when they were built (see
+  // sort_particles), so a run restarted from what the host now holds continues with the same bits
+  // without a sort here.
   void copy_to_host(ParticleSet& p) override {
     if (!resident_) return;
-    sorted_ = false;
     download(p);
   }
 
@@ -350,6 +370,8 @@ class Solver final : public GpuStepper {
     const Real* eps = raw(plastic_strain_);
     const Real* D = raw(damage_);
     const Real* T = raw(temperature_);
+    const Real* B = raw(bulking_);
+    const Real* H = raw(h_);
     // Scatter into the scene's order, widened to double.
     launch<kFlush>("copy_to_host", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const std::int64_t o = orig[i];
@@ -363,12 +385,15 @@ class Solver final : public GpuStepper {
       f[3 * n + o] = eps[i];
       f[4 * n + o] = D[i];
       f[5 * n + o] = T[i];
+      f[6 * n + o] = B[i];
+      f[7 * n + o] = H[i];
     });
     thrust::copy(out_vec_[0].begin(), out_vec_[0].end(), p.pos.begin());
     thrust::copy(out_vec_[1].begin(), out_vec_[1].end(), p.vel.begin());
     thrust::copy(out_sym_.begin(), out_sym_.end(), p.dev_stress.begin());
-    std::vector<double>* fields[6] = {&p.rho, &p.energy, &p.pressure, &p.plastic_strain, &p.damage, &p.temperature};
-    for (int k = 0; k < 6; ++k)
+    std::vector<double>* fields[kHostScalars] = {&p.rho,    &p.energy,      &p.pressure,         &p.plastic_strain,
+                                                 &p.damage, &p.temperature, &p.bulking_pressure, &p.h};
+    for (int k = 0; k < kHostScalars; ++k)
       thrust::copy(out_scalar_.begin() + k * n, out_scalar_.begin() + (k + 1) * n, fields[k]->begin());
   }
 
@@ -377,8 +402,11 @@ class Solver final : public GpuStepper {
     const std::int64_t n = n_;
     // Pairs approach by at most dt vmax before the second evaluation, each particle moves at most
     // dt/2 |v| to the midpoint: keep the sort while displacement + dt vmax stays under half the skin.
+    // With a variable smoothing length the support grows too: a pair the lists must hold is within
+    // reach(h_max now) + 2 (displacement + dt vmax) < reach(h_max at the sort) + skin.
     const double vmax = max_speed();
-    if (!sorted_ || max_displacement() + dt * vmax * 1.01 >= 0.5 * skin_)
+    const double growth = variable_h_ && sorted_ ? search_reach(max_smoothing_length()) - reach_at_sort_ : 0.0;
+    if (!sorted_ || max_displacement() + dt * vmax * 1.01 + 0.5 * growth >= 0.5 * skin_)
       clock_.time(PhaseClock::Sort, [&] { sort_particles(); });
 
     evaluate(y0_, dt);
@@ -386,49 +414,13 @@ class Solver final : public GpuStepper {
     evaluate(y_half_, dt);
     clock_.time(PhaseClock::Advance, [&] { advance(y0_, dt, y1_, true); });
     clock_.time(PhaseClock::Check, [&] { check_state(dt); });
-    stats_.contact_work =
-        dt * static_cast<double>(thrust::reduce(contact_power_.begin(), contact_power_.begin() + n, Real(0)));
+    stats_.contact_work = dt * contact_power_sum();
     std::swap(y0_, y1_);
-    clock_.time(PhaseClock::Finish, [&] { finish(); });
+    clock_.time(PhaseClock::Finish, [&] { finish(dt); });
     if (!defer_) download(p);
   }
 
  // The rest is public only because nvcc's extended (device) lambdas may not live in private members.
-  // The ceramics physics of the reference (JH-2 strength and damage with bulking, the per-material pair
-  // factor, variable smoothing length, the SRAD contact distance) is not in the port yet: a scene that
-  // needs it is refused rather than run with part of its physics.
-  static void reject_unported(const Scene& scene) {
-    auto refuse = [](const std::string& what) {
-      throw std::runtime_error("the gpu port does not have " + what + " yet; run this case with --backend reference");
-    };
-    for (const MaterialParams<double>& m : scene.materials) {
-      if (m.strength.kind == StrengthKind::JohnsonHolmquist2 || m.damage.kind == DamageKind::JohnsonHolmquist2)
-        refuse("the Johnson-Holmquist 2 model");
-      if (!m.damage.scale_pairs) refuse("materials whose damage does not scale the pair terms (pair_factor = false)");
-    }
-    for (const BodySpec& b : scene.spec.bodies)
-      if (b.variable_h) refuse("the variable smoothing length (body '" + b.name + "')");
-    for (const ContactSpec& c : scene.spec.contacts)
-      if (c.srad > 0) refuse("the SRAD contact distance");
-  }
-
-  static MaterialParams<Real> convert(const MaterialParams<double>& m) {
-    MaterialParams<Real> r;
-    const EosParams<double>& e = m.eos;
-    r.eos = EosParams<Real>{e.kind, Real(e.rho0), Real(e.k1), Real(e.k2), Real(e.k3), Real(e.c0),
-                            Real(e.s1), Real(e.s2), Real(e.s3), Real(e.gamma0), Real(e.a)};
-    const StrengthParams<double>& s = m.strength;
-    r.strength = StrengthParams<Real>{s.kind, Real(s.shear_modulus), Real(s.yield_stress), Real(s.jc_a), Real(s.jc_b),
-                                      Real(s.jc_n), Real(s.jc_c), Real(s.jc_m), Real(s.reference_strain_rate),
-                                      Real(s.melt_temperature), Real(s.taylor_quinney)};
-    const DamageParams<double>& d = m.damage;
-    r.damage = DamageParams<Real>{d.kind, Real(d.critical_plastic_strain), Real(d.d1), Real(d.d2), Real(d.d3),
-                                  Real(d.d4), Real(d.d5), Real(d.min_failure_strain)};
-    r.specific_heat = Real(m.specific_heat);
-    r.room_temperature = Real(m.room_temperature);
-    return r;
-  }
-
   template <class T> static void upload_converted(const std::vector<double>& src, DVec<T>& dst) {
     std::vector<T> tmp(src.begin(), src.end());
     dst = tmp;
@@ -454,6 +446,7 @@ class Solver final : public GpuStepper {
     upload_converted(p.plastic_strain, plastic_strain_);
     upload_converted(p.damage, damage_);
     upload_converted(p.temperature, temperature_);
+    upload_converted(p.bulking_pressure, bulking_);
     upload_converted(p.mass, mass_);
     upload_converted(p.h, h_);
     material_ = p.material;
@@ -461,20 +454,34 @@ class Solver final : public GpuStepper {
     fixed_ = p.fixed;
     original_.resize(n);
     thrust::sequence(original_.begin(), original_.end());
-    double h_max = 0;
-    for (double h : p.h) h_max = std::max(h_max, h);
-    // Search radius: the kernel support or the contact distance, plus a skin of 5 % of it.
-    const double reach = std::max(kernel_support(h_max), contact_reach_);
-    skin_ = 0.05 * reach;
-    radius_ = reach + skin_;
     for (DVec<Real>* a : {&rate_drho_, &rate_de_, &strain_rate_, &contact_power_, &d_eps_p_, &d_temperature_,
                           &history_rate_, &scratch_real_})
       a->resize(n);
     rate_pos_.resize(n); rate_acc_.resize(n); rate_S_.resize(n); grad_v_.resize(n);
     fallback_.resize(n); neighbour_count_.resize(n); pos_at_sort_.resize(n);
-    out_vec_[0].resize(n); out_vec_[1].resize(n); out_sym_.resize(n); out_scalar_.resize(6 * n);
+    out_vec_[0].resize(n); out_vec_[1].resize(n); out_sym_.resize(n); out_scalar_.resize(kHostScalars * n);
     sorted_ = false;
     resident_ = true;
+  }
+
+  // Search radius without the skin: the kernel support or the contact distance at the largest h (m).
+  double search_reach(double h_max) const {
+    return std::max({static_cast<double>(kernel_support(h_max)), contact_reach_, contact_srad_ * h_max});
+  }
+
+  // The contact power summed over the particles in the scene's order (W), so that the sum does not depend
+  // on the order of the last sort either.
+  double contact_power_sum() {
+    if (contact_reach_ == 0 && contact_srad_ == 0) return 0.0;
+    const Real* power = raw(contact_power_);
+    const std::int32_t* orig = raw(original_);
+    Real* out = raw(scratch_real_);
+    launch<kFlush>("contact_power", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[orig[i]] = power[i]; });
+    return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n_, Real(0)));
+  }
+
+  double max_smoothing_length() {
+    return static_cast<double>(thrust::reduce(h_.begin(), h_.begin() + n_, Real(0), MaxOf{}));
   }
 
   double max_speed() {
@@ -521,6 +528,10 @@ class Solver final : public GpuStepper {
     const std::int64_t n = n_;
     if (n == 0) return;
     ++sorts_;
+    // Search radius: the reach at the largest h now, plus a skin of 5 % of it.
+    reach_at_sort_ = search_reach(max_smoothing_length());
+    skin_ = 0.05 * reach_at_sort_;
+    radius_ = reach_at_sort_ + skin_;
     const double cell = 0.5 * radius_;
     {
       // Key (cell, index in the scene): the order depends on the positions only, not on the order before,
@@ -540,7 +551,7 @@ class Solver final : public GpuStepper {
       DVec<std::uint8_t> tb;
       permute(y0_.pos, t3p); permute(y0_.vel, t3); permute(y0_.rho, t1); permute(y0_.energy, t1); permute(y0_.S, ts);
       permute(pressure_, t1); permute(plastic_strain_, t1); permute(damage_, t1); permute(temperature_, t1);
-      permute(mass_, t1); permute(h_, t1); permute(material_, ti); permute(body_, ti); permute(fixed_, tb);
+      permute(bulking_, t1); permute(mass_, t1); permute(h_, t1); permute(material_, ti); permute(body_, ti); permute(fixed_, tb);
       permute(original_, ti);
     }
     // Ghosts: count the images of each real, scan, fill.
@@ -563,7 +574,9 @@ class Solver final : public GpuStepper {
     ghost_source_.resize(static_cast<std::size_t>(ghosts_));
     ghost_sign_.resize(static_cast<std::size_t>(ghosts_));
     ghost_shift_.resize(static_cast<std::size_t>(ghosts_));
+    ghost_mask_.resize(static_cast<std::size_t>(ghosts_));
     std::int32_t* src = raw(ghost_source_);
+    std::int32_t* gmask = raw(ghost_mask_);
     Vec3p* gsign = raw(ghost_sign_);
     Vec3p* gshift = raw(ghost_shift_);
     launch<kFlush>("ghost_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
@@ -572,6 +585,7 @@ class Solver final : public GpuStepper {
       for (int m = 1; m < masks; ++m)
         if (mirror_image(prm.planes, planes, m, x[i], margin, sign, shift)) {
           src[k] = static_cast<std::int32_t>(i);
+          gmask[k] = m;
           gsign[k] = sign;
           gshift[k] = shift;
           ++k;
@@ -611,7 +625,18 @@ class Solver final : public GpuStepper {
       for (std::int64_t c = before + 1; c <= here; ++c) start[c] = static_cast<std::int32_t>(s);
     });
     // Verlet list of each real: the sorted slots within the search radius, gathered over the 5x5x5 cells
-    // around it (count, scan, fill: no atomics, each row in slot order).
+    // around it (count, scan, fill: no atomics), each row then ordered by the identity of its points
+    // (scene index of the real, and the planes of a ghost). A pass sums a particle's pairs in that order,
+    // which does not depend on when the lists were built: a run restarted from a checkpoint (whose first
+    // step sorts) continues with the same bits as the run that wrote it, whatever its sort schedule.
+    identity_.resize(static_cast<std::size_t>(total));
+    std::int64_t* identity = raw(identity_);
+    const std::int32_t* orig = raw(original_);
+    launch<kFlush>("point_identity", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+      const std::int64_t pnt = order[s];
+      identity[s] = pnt < n ? static_cast<std::int64_t>(orig[pnt]) << 8
+                            : (static_cast<std::int64_t>(orig[src[pnt - n]]) << 8) | gmask[pnt - n];
+    });
     sorted_points_.resize(static_cast<std::size_t>(total));
     Vec3p* sp = raw(sorted_points_);
     launch<kFlush>("sorted_points", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { sp[s] = pts[order[s]]; });
@@ -634,10 +659,18 @@ class Solver final : public GpuStepper {
     launch<kFlush>("list_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const std::int64_t s = slot[i];
       const Vec3p xs = sp[s];
-      std::int64_t k = off[i];
+      const std::int64_t first = off[i];
+      std::int64_t k = first;
       cr.for_each_candidate(s, [&](std::int32_t j) {
         if (norm2(xs - sp[j]) < r2) list[k++] = j;
       });
+      for (std::int64_t a = first + 1; a < k; ++a) {  // insertion sort by identity: rows are short
+        const std::int32_t j = list[a];
+        const std::int64_t id = identity[j];
+        std::int64_t b = a;
+        for (; b > first && identity[list[b - 1]] > id; --b) list[b] = list[b - 1];
+        list[b] = j;
+      }
     });
     thrust::copy(y0_.pos.begin(), y0_.pos.end(), pos_at_sort_.begin());
     const std::size_t t = static_cast<std::size_t>(total);
@@ -687,21 +720,24 @@ class Solver final : public GpuStepper {
     const Real* mass = raw(mass_);
     const Real* h = raw(h_);
     const Real* damage = raw(damage_);
+    const Real* bulking = raw(bulking_);
     const std::int32_t* material = raw(material_);
     const std::int32_t* body = raw(body_);
     const std::uint8_t* fixed = raw(fixed_);
 
     // Work arrays in sorted order: reals from the state, ghosts as mirror images of their source. EOS
-    // pressure and sound speed; a failed particle carries no deviator and no tension (F 4.2).
+    // pressure (with the JH-2 bulking increment) and sound speed; what a particle carries at its damage
+    // (apply_failure: a failed metal no deviator and no tension, F 4.2; JH-2 the tensile limit), and the
+    // damage it brings into the pair factor (its material's choice, pair_damage).
     clock_.begin();
     launch<kFlush>("gather", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
       const std::int64_t pnt = order[s];
       const std::int64_t i = pnt < n ? pnt : gsrc[pnt - n];
       const std::int32_t mi = material[i];
       Real c = 0;
-      Real P = eos_pressure(mats[mi].eos, y.rho[i], y.energy[i], c);
+      Real P = material_pressure(mats[mi], y.rho[i], y.energy[i], bulking[i], c);
       Sym3<Real> S = y.S[i];
-      apply_failure(S, P, damage[i]);
+      apply_failure(mats[mi], S, P, damage[i]);
       Vec3p xs = y.pos[i];
       Vec3<Real> vs = y.vel[i];
       if (pnt >= n) {
@@ -713,7 +749,8 @@ class Solver final : public GpuStepper {
       }
       const Real rho = y.rho[i];
       w.x[s] = xs; w.v[s] = vs; w.rho[s] = rho; w.p[s] = P; w.c[s] = c; w.m[s] = mass[i]; w.h[s] = h[i];
-      w.mat[s] = mi; w.body[s] = body[i]; w.damage[s] = damage[i]; w.S[s] = S;
+      w.mat[s] = mi; w.body[s] = body[i]; w.damage[s] = pair_damage(mats[mi], damage[i]);
+      w.S[s] = S;
       w.vol[s] = mass[i] / rho;
       const Real inv_rho2 = Real(1) / (rho * rho);
       w.A[s] = inv_rho2 * Sym3<Real>{S.xx - P, S.yy - P, S.zz - P, S.xy, S.yz, S.zx};
@@ -796,7 +833,7 @@ class Solver final : public GpuStepper {
         if (pc.penalty) {
           const Vec3<Real> vij = vi - w.v[j];
           const Vec3<Real> force = penalty_contact_force(
-              PenaltyContactParams<Real>{pc.scale}, xij, vij, pc.distance, mi_mass, w.m[j], hi, w.h[j],
+              PenaltyContactParams<Real>{pc.scale}, xij, vij, pc.touch(hi, w.h[j]), mi_mass, w.m[j], hi, w.h[j],
               mat_i.strength.shear_modulus, mats[w.mat[j]].strength.shear_modulus, rhoi, w.rho[j], dt);
           contact += force;
           power += Real(0.5) * penalty_contact_energy_rate(force, vij);
@@ -846,6 +883,7 @@ class Solver final : public GpuStepper {
     const Real* eps_p = raw(plastic_strain_);
     const Real* T = raw(temperature_);
     const Real* D = raw(damage_);
+    const Real* bulking = raw(bulking_);
     const std::int32_t* material = raw(material_);
     Real* h_eps = raw(d_eps_p_);
     Real* h_T = raw(d_temperature_);
@@ -860,9 +898,10 @@ class Solver final : public GpuStepper {
       out.vel[i] = v;
       const Real rho = advance_density(m, y0.rho[i], rdrho[i], dt);
       out.rho[i] = rho;
-      out.energy[i] = y0.energy[i] + dt * rde[i];
+      const Real e = y0.energy[i] + dt * rde[i];
+      out.energy[i] = e;
       Sym3<Real> S = y0.S[i] + dt * rS[i];
-      const PlasticResult<Real> pr = plastic_update(m, S, eps_p[i], reps[i], T[i], rho, D[i]);
+      const PlasticResult<Real> pr = trial_plastic_return(m, S, eps_p[i], reps[i], T[i], rho, e, bulking[i], D[i]);
       out.S[i] = S;
       if (record) {
         h_eps[i] = pr.d_eps_p;
@@ -872,8 +911,10 @@ class Solver final : public GpuStepper {
     });
   }
 
-  // History variables of the final stage: plastic strain, heating, pressure, damage (F 4.7-4.9).
-  void finish() {
+  // History variables of the final stage: plastic strain, heating, pressure, damage, bulking (F 4.7-4.9,
+  // X eq 28), and the variable smoothing length (X eqs 9-10) from the velocity gradient of the last
+  // evaluation.
+  void finish(double dt_in) {
     const StateView<Real> y = view(y0_);
     const MaterialParams<Real>* mats = raw(materials_);
     const std::int32_t* material = raw(material_);
@@ -881,12 +922,20 @@ class Solver final : public GpuStepper {
     Real* T = raw(temperature_);
     Real* D = raw(damage_);
     Real* P = raw(pressure_);
+    Real* bulking = raw(bulking_);
+    Real* h = raw(h_);
+    const std::int32_t* body = raw(body_);
+    const BodySmoothing<Real>* smoothing = raw(body_smoothing_);
+    const Mat3<Real>* grad_v = raw(grad_v_);
+    const Real dt = static_cast<Real>(dt_in);
     const Real* h_eps = raw(d_eps_p_);
     const Real* h_T = raw(d_temperature_);
     const Real* h_rate = raw(history_rate_);
     launch<kFlush>("finish_step", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      finish_step(mats[material[i]], y.rho[i], y.energy[i], y.S[i], eps_p[i], T[i], D[i], P[i], h_eps[i], h_T[i],
-                  h_rate[i]);
+      finish_step(mats[material[i]], y.rho[i], y.energy[i], y.S[i], eps_p[i], T[i], D[i], P[i], bulking[i], h_eps[i],
+                  h_T[i], h_rate[i]);
+      const BodySmoothing<Real> b = smoothing[body[i]];
+      if (b.variable) h[i] = advance_smoothing_length(h[i], grad_v[i].trace(), dt, b.h_lo, b.h_hi);
     });
   }
 
@@ -933,7 +982,11 @@ class Solver final : public GpuStepper {
   Params<Real> params_{};
   DVec<MaterialParams<Real>> materials_;
   DVec<PairContact<Real>> contacts_;
+  DVec<BodySmoothing<Real>> body_smoothing_;
+  bool variable_h_ = false;   // some body has a variable smoothing length
   double contact_reach_ = 0;  // largest penalty contact distance, m
+  double contact_srad_ = 0;   // largest SRAD of a penalty contact (touching at srad h)
+  double reach_at_sort_ = 0;  // search_reach at the last sort, m
   double skin_ = 0, radius_ = 0;  // m
   bool resident_ = false, sorted_ = false, defer_ = false;
   long sorts_ = 0;
@@ -941,7 +994,7 @@ class Solver final : public GpuStepper {
 
   // Real particles, in the order of the last sort (original_ maps to the scene's order).
   StateArrays<Real> y0_, y_half_, y1_;
-  DVec<Real> pressure_, plastic_strain_, damage_, temperature_, mass_, h_;
+  DVec<Real> pressure_, plastic_strain_, damage_, temperature_, bulking_, mass_, h_;
   DVec<std::int32_t> material_, body_, original_;
   DVec<std::uint8_t> fixed_;
   DVec<Vec3p> pos_at_sort_;
@@ -953,7 +1006,8 @@ class Solver final : public GpuStepper {
   DVec<std::int32_t> fallback_, neighbour_count_;
   DVec<std::int64_t> bad_;
   // Ghosts and the cell structure.
-  DVec<std::int32_t> ghost_count_, ghost_source_;
+  DVec<std::int32_t> ghost_count_, ghost_source_, ghost_mask_;
+  DVec<std::int64_t> identity_;  // per sorted point: scene index << 8 | plane mask (0 for a real)
   DVec<Vec3p> ghost_sign_, ghost_shift_, points_;
   DVec<std::uint32_t> keys_;
   DVec<std::uint64_t> real_keys_;

@@ -256,15 +256,8 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
     // Trial stress, then the plastic return at the history variables of the step start.
     Sym3d s = y0.dev_stress[i] + dt * f.dstress[i];
     const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(material_[i])];
-    double P = 0;
-    if (strength_needs_pressure(mat)) {  // JH-2: the flow stress at the pressure of the new state
-      double c = 0;
-      Sym3d unused = s;
-      P = material_pressure(mat, out.rho[i], out.energy[i], bulking_[i], c);
-      apply_failure(mat, unused, P, damage_[i]);
-    }
-    const PlasticResult<double> pr =
-        plastic_update(mat, s, plastic_strain_[i], f.strain_rate[i], temperature_[i], out.rho[i], damage_[i], P);
+    const PlasticResult<double> pr = trial_plastic_return(mat, s, plastic_strain_[i], f.strain_rate[i], temperature_[i],
+                                                          out.rho[i], out.energy[i], bulking_[i], damage_[i]);
     out.dev_stress[i] = s;
     if (history) {
       history->d_eps_p[i] = pr.d_eps_p;
@@ -348,27 +341,14 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
   std::swap(p.rho, y1.rho);
   std::swap(p.energy, y1.energy);
   std::swap(p.dev_stress, y1.dev_stress);
-  // History variables of the final stage: plastic strain, adiabatic heating, damage (F 4.7-4.9).
+  // History variables of the final stage: plastic strain, adiabatic heating, damage, bulking (F 4.7-4.9,
+  // X eq 28; integration.hpp), and the smoothing length.
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
     const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
-    p.plastic_strain[i] += history.d_eps_p[i];
-    p.temperature[i] += history.d_temperature[i];
-    double c = 0;
-    p.pressure[i] = material_pressure(mat, p.rho[i], p.energy[i], p.bulking_pressure[i], c);
-    apply_failure(mat, p.dev_stress[i], p.pressure[i], p.damage[i]);  // JH-2: P at the tensile limit
-    if (p.damage[i] < 1.0) {
-      const double d_old = p.damage[i];
-      const double dd = damage_increment(mat, history.d_eps_p[i], p.plastic_strain[i], p.pressure[i],
-                                         von_mises(p.dev_stress[i]), history.strain_rate[i], p.temperature[i]);
-      p.damage[i] = std::min(1.0, p.damage[i] + dd);
-      // JH-2 bulking (X eq 28): the strength lost with the damage becomes a pressure increment.
-      p.bulking_pressure[i] = jh2_bulking_increment(mat, p.rho[i], p.pressure[i], d_old, p.damage[i],
-                                                    history.strain_rate[i], p.bulking_pressure[i]);
-      if (p.bulking_pressure[i] != bulking_[i])
-        p.pressure[i] = material_pressure(mat, p.rho[i], p.energy[i], p.bulking_pressure[i], c);
-    }
-    apply_failure(mat, p.dev_stress[i], p.pressure[i], p.damage[i]);
+    finish_step(mat, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i], p.temperature[i], p.damage[i],
+                p.pressure[i], p.bulking_pressure[i], history.d_eps_p[i], history.d_temperature[i],
+                history.strain_rate[i]);
     // Variable smoothing length (X eqs 9-10): dh/dt = (1/3) h div v, within the body's bounds.
     const std::size_t b = static_cast<std::size_t>(p.body[i]);
     if (body_variable_h_[b])

@@ -17,6 +17,7 @@
 #include <cstdio>
 
 #include "common/damage.hpp"
+#include "common/integration.hpp"
 #include "common/material.hpp"
 #include "common/smoothing_length.hpp"
 
@@ -150,6 +151,65 @@ TEST(Jh2, PairDamageOnlyForMaterialsThatScalePairs) {
   EXPECT_EQ(pair_damage(m, 1.0), 0.0);
   m.damage.scale_pairs = true;
   EXPECT_EQ(pair_damage(m, 0.7), 0.7);
+}
+
+// The end of a step (integration.hpp, both solvers): from D = 0 at mu = 0.01 (P = K1 mu), a plastic
+// increment of twice the failure strain fails the particle (X eq 25), the strength it loses becomes the
+// bulking pressure of the hand values above, and the pressure carries it.
+TEST(Jh2, FinishStepDamagesBulksAndRaisesThePressure) {
+  const MaterialParams<double> m = alumina();
+  const double rho = 3921 * 1.01, P_eos = 130.95e9 * 0.01;
+  const double eps_f = 0.005 * (P_eos / 1.46e9 + 0.2 / 1.46);
+  Sym3<double> S{1e8, -5e7, -5e7, 0, 0, 0};
+  double eps_p = 0, T = 293, D = 0, P = 0, bulking = 0;
+  finish_step(m, rho, 0.0, S, eps_p, T, D, P, bulking, 2 * eps_f, 0.0, 0.0);
+  EXPECT_EQ(eps_p, 2 * eps_f);
+  EXPECT_EQ(D, 1.0);
+  EXPECT_NEAR(bulking, 0.50347416746430016e9, 1e4);
+  EXPECT_NEAR(P, P_eos + bulking, 1e-3);
+  EXPECT_EQ(S.xx, 1e8) << "a JH-2 particle keeps its deviator (the fractured strength bounds it)";
+  // A failed metal particle (D reaching 1) carries no deviator and no tension.
+  MaterialParams<double> metal;
+  metal.eos = m.eos;
+  metal.strength.kind = StrengthKind::PerfectlyPlastic;
+  metal.strength.shear_modulus = 80e9;
+  metal.strength.yield_stress = 1e9;
+  metal.damage.kind = DamageKind::CriticalPlasticStrain;
+  metal.damage.critical_plastic_strain = 0.1;
+  Sym3<double> Sm{1e8, -5e7, -5e7, 0, 0, 0};
+  double eps_m = 0.09, Tm = 293, Dm = 0, Pm = 0, bm = 0;
+  finish_step(metal, 3921 * 0.99, 0.0, Sm, eps_m, Tm, Dm, Pm, bm, 0.02, 0.0, 0.0);
+  EXPECT_EQ(Dm, 1.0);
+  EXPECT_EQ(Sm.xx, 0.0);
+  EXPECT_EQ(Pm, 0.0);
+  EXPECT_EQ(bm, 0.0);
+}
+
+// The gpu port's float build takes every constant of the material, converted (convert_material).
+TEST(Jh2, MaterialConstantsConvertToFloat) {
+  MaterialParams<double> m = alumina();
+  m.strength.sfmax = 0.8;
+  m.damage.min_failure_strain = 0.01;
+  m.specific_heat = 880;
+  const MaterialParams<float> f = convert_material<float>(m);
+  EXPECT_EQ(f.strength.kind, StrengthKind::JohnsonHolmquist2);
+  EXPECT_EQ(f.damage.kind, DamageKind::JohnsonHolmquist2);
+  EXPECT_EQ(f.eos.kind, EosKind::Polynomial);
+  EXPECT_FLOAT_EQ(f.eos.k1, 130.95e9f);
+  EXPECT_FLOAT_EQ(f.strength.jh_a, 0.93f);
+  EXPECT_FLOAT_EQ(f.strength.jh_b, 0.31f);
+  EXPECT_FLOAT_EQ(f.strength.jh_m, 0.6f);
+  EXPECT_FLOAT_EQ(f.strength.hel, 2.79e9f);
+  EXPECT_FLOAT_EQ(f.strength.p_hel, 1.46e9f);
+  EXPECT_FLOAT_EQ(f.strength.tensile_pressure, 0.2e9f);
+  EXPECT_FLOAT_EQ(f.strength.sfmax, 0.8f);
+  EXPECT_FLOAT_EQ(f.damage.d1, 0.005f);
+  EXPECT_FLOAT_EQ(f.damage.bulking, 1.0f);
+  EXPECT_FLOAT_EQ(f.damage.min_failure_strain, 0.01f);
+  EXPECT_FALSE(f.damage.scale_pairs);
+  EXPECT_FLOAT_EQ(f.specific_heat, 880.0f);
+  // The float flow stress follows the double one.
+  EXPECT_NEAR(jh2_flow_stress(f.strength, 2e9f, 0.0f, 0.4f), 1.7224949782415552e9, 1e3);
 }
 
 // Analytic: a uniaxial-strain compression (plate impact) driven through the constitutive update that the
