@@ -26,41 +26,39 @@ double ElasticWaveExact::c_l() {
   return std::sqrt((bulk + 4 * shear / 3) / rho);
 }
 
-ElasticWaveMeasure measure_elastic_wave(const std::string& case_file, const std::string& spacing,
-                                        const std::vector<std::string>& sets) {
-  using X = ElasticWaveExact;
-  Scene scene = build_scene(load_case_file(case_file, sets, spacing));
-  const double dx = scene.spec.numerics.spacing;
-  const auto t_start = std::chrono::steady_clock::now();
-  reference::ReferenceSolver solver(scene);
-  const Totals t0 = summarise_totals(scene.particles);
-  const int slabs = static_cast<int>(std::lround(X::bar / dx));
-  auto vx = [&](std::size_t i) { return scene.particles.vel[i].x; };
+ElasticWaveProbe::ElasticWaveProbe(const Scene& scene)
+    : dx_(scene.spec.numerics.spacing),
+      end_(scene.spec.time.end),
+      slabs_(static_cast<int>(std::lround(ElasticWaveExact::bar / dx_))),
+      t0_(summarise_totals(scene.particles)) {}
 
-  std::vector<double> times, fronts;
-  double next_sample = 4e-6;
-  const double end = scene.spec.time.end;
-  const long steps = run_reference(scene, solver, end, [&](double t) {
-    if (t < next_sample) return;
-    next_sample += 0.5e-6;
-    times.push_back(t);
-    fronts.push_back(leading_crossing(slab_profile(scene.particles, 0, 0.0, dx, slabs, vx), 0.5 * X::v));
-  });
+void ElasticWaveProbe::sample(const ParticleSet& p, double t) {
+  if (t < next_sample_) return;
+  next_sample_ += 0.5e-6;
+  times_.push_back(t);
+  fronts_.push_back(leading_crossing(slab_profile(p, 0, 0.0, dx_, slabs_, [&](std::size_t i) { return p.vel[i].x; }),
+                                     0.5 * ElasticWaveExact::v));
+}
+
+ElasticWaveMeasure ElasticWaveProbe::finish(const ParticleSet& p, const RunCost& cost) const {
+  using X = ElasticWaveExact;
+  const double dx = dx_, end = end_;
+  const int slabs = slabs_;
+  auto vx = [&](std::size_t i) { return p.vel[i].x; };
   ElasticWaveMeasure r;
-  r.cost = {dx, scene.particles.size(), steps, seconds_since(t_start)};
-  const LineFit fit = fit_line(times, fronts);
+  r.cost = cost;
+  const LineFit fit = fit_line(times_, fronts_);
 
   // The pulse at `end`: the exact solution is v = X::v on [front - 2 L_flyer, front), zero elsewhere.
   const double front = X::flyer + X::c_l() * end;
-  const Profile vprof = slab_profile(scene.particles, 0, 0.0, dx, slabs, vx);
+  const Profile vprof = slab_profile(p, 0, 0.0, dx, slabs, vx);
   double l1 = 0;
   for (std::size_t k = 0; k < vprof.x.size(); ++k) {
     const double exact = (vprof.x[k] >= front - 2 * X::flyer && vprof.x[k] < front) ? X::v : 0.0;
     l1 += std::abs(vprof.value[k] - exact) * dx;
   }
-  const Profile sprof = slab_profile(scene.particles, 0, 0.0, dx, slabs, [&](std::size_t i) {
-    return scene.particles.pressure[i] - scene.particles.dev_stress[i].xx;
-  });
+  const Profile sprof =
+      slab_profile(p, 0, 0.0, dx, slabs, [&](std::size_t i) { return p.pressure[i] - p.dev_stress[i].xx; });
   double stress = 0;
   int n = 0;
   for (std::size_t k = 0; k < sprof.x.size(); ++k)
@@ -68,14 +66,26 @@ ElasticWaveMeasure measure_elastic_wave(const std::string& case_file, const std:
       stress += sprof.value[k];
       ++n;
     }
-  const Totals t1 = summarise_totals(scene.particles);
+  const Totals t1 = summarise_totals(p);
   r.speed = fit.slope;
   r.speed_stderr = fit.slope_stderr;
   r.stress = stress / n;
   r.velocity_l1 = l1 / (X::v * 2 * X::flyer);
-  r.energy_drift = (t1.total_energy() - t0.total_energy()) / t0.total_energy();
-  r.momentum_error = norm(t1.momentum - t0.momentum) / norm(t0.momentum);
+  r.energy_drift = (t1.total_energy() - t0_.total_energy()) / t0_.total_energy();
+  r.momentum_error = norm(t1.momentum - t0_.momentum) / norm(t0_.momentum);
   return r;
+}
+
+ElasticWaveMeasure measure_elastic_wave(const std::string& case_file, const std::string& spacing,
+                                        const std::vector<std::string>& sets) {
+  Scene scene = build_scene(load_case_file(case_file, sets, spacing));
+  const double dx = scene.spec.numerics.spacing;
+  const auto t_start = std::chrono::steady_clock::now();
+  reference::ReferenceSolver solver(scene);
+  ElasticWaveProbe probe(scene);
+  const long steps = run_reference(scene, solver, scene.spec.time.end,
+                                   [&](double t) { probe.sample(scene.particles, t); });
+  return probe.finish(scene.particles, {dx, scene.particles.size(), steps, seconds_since(t_start)});
 }
 
 HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed) {

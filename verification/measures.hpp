@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "common/case_observables.hpp"
+#include "common/observables.hpp"
+#include "common/scene.hpp"
 
 namespace impactsph::verification {
 
@@ -39,8 +41,26 @@ struct ElasticWaveMeasure {
   double speed_error() const { return speed / ElasticWaveExact::c_l() - 1; }
   double stress_error() const { return stress / ElasticWaveExact::stress() - 1; }
 };
+// Runs the case with the reference solver and measures it with an ElasticWaveProbe.
 ElasticWaveMeasure measure_elastic_wave(const std::string& case_file, const std::string& spacing,
                                         const std::vector<std::string>& sets = {});
+
+// The elastic-wave measures of one run of any solver: sample() after every step, finish() at the end.
+// measure_elastic_wave drives it with the reference; `impactsph verify` with the reference and the gpu
+// port stepped side by side, so every solver's errors are measured by the same code.
+class ElasticWaveProbe {
+ public:
+  // Takes the initial totals of `scene`'s particles: construct it after the solver, before the first step.
+  explicit ElasticWaveProbe(const Scene& scene);
+  void sample(const ParticleSet& p, double t);  // t: the time after the step
+  ElasticWaveMeasure finish(const ParticleSet& p, const RunCost& cost) const;
+
+ private:
+  double dx_, end_, next_sample_ = 4e-6;
+  int slabs_;
+  Totals t0_;
+  std::vector<double> times_, fronts_;
+};
 
 // cases/hugoniot-4340: symmetric plate impact at `impact_speed` (each plate at V/2), hydrodynamic.
 // Rankine-Hugoniot with Us = c0 + s up, up = V/2, P = rho0 Us up (Steinberg 4340: 7810, 4578, 1.33).

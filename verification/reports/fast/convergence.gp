@@ -1,4 +1,5 @@
-# Drawn by impactsph verify; run `gnuplot convergence.png` in the report folder to redraw.
+# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the
+# output path below is relative to it).
 set terminal pngcairo size 1000,750 enhanced font 'Sans,11'
 set output 'verification/reports/fast/convergence.png'
 set title 'Convergence against the closed forms (|relative error| against spacing)' noenhanced
