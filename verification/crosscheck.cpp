@@ -30,6 +30,7 @@
 #include "common/observables.hpp"
 #include "gpu/solver.hpp"
 #include "reference/solver.hpp"
+#include "verification/field_diff.hpp"
 #include "verification/harness.hpp"
 
 using namespace impactsph;
@@ -89,39 +90,6 @@ Args parse(int argc, char** argv) {
   }
   if (a.case_file.empty()) usage("no case file");
   return a;
-}
-
-struct Diff {
-  double l2 = 0, max = 0;  // relative
-};
-
-// Relative L2 and max differences of a field with `dim` components per particle.
-template <class Get>
-Diff field_diff(std::size_t n, int dim, Get get) {
-  double d2 = 0, b2 = 0, dmax = 0, bmax = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    double dd = 0, bb = 0;
-    for (int c = 0; c < dim; ++c) {
-      double a = 0, b = 0;
-      get(i, c, a, b);
-      dd += (a - b) * (a - b);
-      bb += b * b;
-    }
-    d2 += dd;
-    b2 += bb;
-    dmax = std::max(dmax, std::sqrt(dd));
-    bmax = std::max(bmax, std::sqrt(bb));
-  }
-  Diff r;
-  r.l2 = b2 > 0 ? std::sqrt(d2 / b2) : std::sqrt(d2);
-  r.max = bmax > 0 ? dmax / bmax : dmax;
-  return r;
-}
-
-double stress_component(const ParticleSet& p, std::size_t i, int c) {
-  const Sym3d& s = p.dev_stress[i];
-  const double v[6] = {s.xx - p.pressure[i], s.yy - p.pressure[i], s.zz - p.pressure[i], s.xy, s.yz, s.zx};
-  return v[c];
 }
 
 struct Check {
@@ -202,19 +170,10 @@ int main(int argc, char** argv) {
     std::printf("\n%8s %11s | %-21s | %-21s | %-21s | %-21s\n", "step", "t [us]", "displacement L2 / max",
                 "velocity L2 / max", "density L2 / max", "stress L2 / max");
     Check check;
-    Diff worst[4];
+    verification::FieldDiff worst[4];
     auto compare = [&](long step, double t) {
-      const Diff d[4] = {
-          field_diff(n, 3, [&](std::size_t i, int c, double& va, double& vb) {
-            va = a.pos[i][c] - x0[i][c];
-            vb = b.pos[i][c] - x0[i][c];
-          }),
-          field_diff(n, 3, [&](std::size_t i, int c, double& va, double& vb) { va = a.vel[i][c]; vb = b.vel[i][c]; }),
-          field_diff(n, 1, [&](std::size_t i, int, double& va, double& vb) { va = a.rho[i]; vb = b.rho[i]; }),
-          field_diff(n, 6, [&](std::size_t i, int c, double& va, double& vb) {
-            va = stress_component(a, i, c);
-            vb = stress_component(b, i, c);
-          })};
+      const verification::FieldDiffs diffs = verification::compare_fields(a, b, x0);
+      const verification::FieldDiff* d = diffs.field.data();
       std::printf("%8ld %11.5f |", step, t * 1e6);
       for (int k = 0; k < 4; ++k) {
         std::printf(" %9.2e %9.2e  |", d[k].l2, d[k].max);

@@ -1,9 +1,8 @@
 // Field differences between two particle sets of the same scene (a solver against the reference), with
-// the definitions of verification/crosscheck.cpp: for displacement u = x - x_0 (m), velocity (m/s),
+// these definitions: for displacement u = x - x_0 (m), velocity (m/s),
 // density (kg/m^3) and stress sigma = S - P I (Pa, six components), the relative L2 difference
 // |a - b|_2 / |b|_2 over the particles and the relative max difference max_i |a_i - b_i| / max_i |b_i|,
-// b the reference. Used by `impactsph verify` (section "CPU against GPU port"); crosscheck.cpp keeps its
-// own copy of the same formulas.
+// b the reference. Used by verification/crosscheck and `impactsph verify` (section "CPU against GPU port").
 #pragma once
 #include <algorithm>
 #include <array>
