@@ -399,7 +399,6 @@ class Solver final : public GpuStepper {
 
   void step(ParticleSet& p, double dt) override {
     if (!resident_) upload(p);
-    const std::int64_t n = n_;
     // Pairs approach by at most dt vmax before the second evaluation, each particle moves at most
     // dt/2 |v| to the midpoint: keep the sort while displacement + dt vmax stays under half the skin.
     // With a variable smoothing length the support grows too: a pair the lists must hold is within
