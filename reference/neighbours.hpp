@@ -1,8 +1,8 @@
 // Cell-linked list neighbour search for the reference solver (design.md, step 1).
-// Particles are binned into cubic cells of the search radius; each particle's neighbours are gathered
-// from the 27 surrounding cells in a fixed order into a compressed list (CSR). The list is built once a
-// step with a skin that covers the relative motion over the step, so both stages of the integrator use
-// it. Building and the order inside each row do not depend on the thread count.
+// Particles are binned into cubic cells of half the search radius; each particle's neighbours are gathered
+// from the surrounding cells in a fixed order into a compressed list (CSR). The solver keeps the list
+// over several steps (a Verlet list with a skin, ReferenceSolver::update_neighbours) and sorts each row by
+// index. Building and the order inside each row do not depend on the thread count.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -137,7 +137,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
 
   // Pass 1: correction matrix L_i (F 2.13), velocity gradient, renormalised density gradient (F 2.19).
   std::size_t fallbacks = 0;
-#pragma omp parallel for schedule(static) reduction(+ : fallbacks)
+  std::int64_t pairs = 0;  // neighbours within the kernel support, for the statistics
+#pragma omp parallel for schedule(static) reduction(+ : fallbacks, pairs)
   for (std::int64_t i = 0; i < ni; ++i) {
     GradientSums<double> sums = GradientSums<double>::zero();
     const Vec3d xi = x_[i], vi = v_[i];
@@ -145,11 +146,12 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     const std::int32_t bi = bb_[i];
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int32_t j = nb[k];
-      if (penalty_between(bi, bb_[j])) continue;  // bodies in penalty contact do not share sums
       const Vec3d xij = xi - x_[j];
       const double hij = 0.5 * (hi + hh_[j]);
       const double r = norm(xij);
       if (r >= kernel_support(hij)) continue;
+      ++pairs;
+      if (penalty_between(bi, bb_[j])) continue;  // bodies in penalty contact do not share sums
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
       add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi);
     }
@@ -160,6 +162,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     grad_rho_[i] = cg.grad_rho;
   }
   stats_.correction_fallbacks = fallbacks;
+  stats_.mean_neighbours = ni ? static_cast<double>(pairs) / static_cast<double>(ni) : 0.0;
   // Viscosity factor per particle: 1, or the Balsara shear limiter of its velocity gradient.
   av_factor_.resize(total);
 #pragma omp parallel for schedule(static)
@@ -291,21 +294,58 @@ void ReferenceSolver::load_constants(const ParticleSet& p) {
   h_max_ = p.size() ? *std::max_element(h_.begin(), h_.end()) : 0.0;
 }
 
+double ReferenceSolver::search_reach() const {
+  return std::max({kernel_support(h_max_), contact_reach_, contact_srad_ * h_max_});
+}
+
+// Each row of the list is sorted by neighbour index, so that the pair sums are taken in an order that
+// does not depend on when the list was built (the cell order does): a run continues with the same bits
+// whether its list is reused or rebuilt, and a restart (which starts with a build) matches the run that
+// wrote the checkpoint.
 void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double skin) {
-  const double support = std::max({kernel_support(h_max_), contact_reach_, contact_srad_ * h_max_});
-  find_ghosts(pos, support + skin);
+  const double reach = search_reach();
+  find_ghosts(pos, reach + skin);
   std::vector<Vec3d> points(pos);
   points.reserve(pos.size() + ghosts_.size());
   for (const Ghost& g : ghosts_) points.push_back(hadamard(g.sign, pos[static_cast<std::size_t>(g.source)]) + g.shift);
-  build_neighbour_list(points, pos.size(), support + skin, neighbours_);
-  stats_.mean_neighbours = neighbours_.mean_count();
+  build_neighbour_list(points, pos.size(), reach + skin, neighbours_);
+  const std::int64_t rows = static_cast<std::int64_t>(pos.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < rows; ++i)
+    std::sort(neighbours_.indices.begin() + neighbours_.offsets[i], neighbours_.indices.begin() + neighbours_.offsets[i + 1]);
   stats_.ghosts = ghosts_.size();
+}
+
+// The Verlet criterion: every pair within reach at any stage of this step was within reach + skin at the
+// build if 2 (largest displacement since the build + dt vmax) + growth of the reach < skin (each of the
+// two particles moved at most that much; by the midpoint a particle has moved dt/2 |v|, and the second
+// evaluation's pairs are at most dt vmax closer than at the step start). The growth is that of a
+// variable smoothing length. The skin is 5 % of the reach.
+void ReferenceSolver::update_neighbours(const ParticleSet& p, double dt) {
+  const std::size_t n = p.size();
+  const std::int64_t ni = static_cast<std::int64_t>(n);
+  double vmax = 0, moved = 0;
+  const bool same = list_valid_ && pos_at_build_.size() == n;
+#pragma omp parallel for schedule(static) reduction(max : vmax, moved)
+  for (std::int64_t i = 0; i < ni; ++i) {
+    vmax = std::max(vmax, norm(p.vel[i]));
+    if (same) moved = std::max(moved, norm(p.pos[i] - pos_at_build_[i]));
+  }
+  const double reach = search_reach();
+  const double growth = std::max(0.0, reach - reach_at_build_);
+  if (same && moved + dt * vmax * 1.01 + 0.5 * growth < 0.5 * skin_) return;
+  reach_at_build_ = reach;
+  skin_ = 0.05 * reach;
+  build_neighbours(p.pos, skin_);
+  pos_at_build_ = p.pos;
+  list_valid_ = true;
 }
 
 std::size_t ReferenceSolver::velocity_gradients(const ParticleSet& p, std::vector<Mat3d>& grad_v) {
   load_constants(p);
   State y{p.pos, p.vel, p.rho, p.energy, p.dev_stress};
   build_neighbours(y.pos, 0.0);
+  list_valid_ = false;
   Rates f;
   evaluate(y, f, 0.0);
   grad_v = grad_v_;
@@ -317,11 +357,7 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
   load_constants(p);
   State& y0 = y0_;
   y0.pos = p.pos; y0.vel = p.vel; y0.rho = p.rho; y0.energy = p.energy; y0.dev_stress = p.dev_stress;
-  double vmax = 0;
-  for (std::size_t i = 0; i < n; ++i) vmax = std::max(vmax, norm(p.vel[i]));
-  // Pairs can approach by at most dt vmax before the second evaluation (at y_1/2 each particle has moved
-  // dt/2 |v_i|); the skin keeps every pair that can enter the support in the list.
-  build_neighbours(y0.pos, dt * vmax * 1.01 + 1e-9 * h_max_);
+  update_neighbours(p, dt);
 
   Rates& f = rates_;
   State& y_half = y_half_;

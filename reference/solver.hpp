@@ -58,7 +58,12 @@ class ReferenceSolver final : public Stepper {
 
   void load_constants(const ParticleSet& p);
   void find_ghosts(const std::vector<Vec3d>& pos, double margin);
+  // Search radius without the skin: the kernel support or the contact reach at the largest h (m).
+  double search_reach() const;
   void build_neighbours(const std::vector<Vec3d>& pos, double skin);
+  // Rebuilds the Verlet list (and the ghosts) when a pair that is not in it could come within reach
+  // before the step ends.
+  void update_neighbours(const ParticleSet& p, double dt);
   void evaluate(const State& y, Rates& f, double dt);
   void advance(const State& y0, const Rates& f, double dt, State& out, History* history) const;
   // How the bodies of two particles interact: shared SPH sums or penalty contact.
@@ -83,7 +88,10 @@ class ReferenceSolver final : public Stepper {
   double h_max_ = 0;
 
   std::vector<Ghost> ghosts_;
-  NeighbourList neighbours_;
+  NeighbourList neighbours_;  // Verlet list: each row in index order (reals, then ghosts)
+  bool list_valid_ = false;
+  std::vector<Vec3d> pos_at_build_;  // positions when the list was built
+  double reach_at_build_ = 0, skin_ = 0;  // m
   // Work arrays over real particles followed by ghosts.
   std::vector<Vec3d> x_, v_, grad_rho_;
   std::vector<double> rho_, pressure_, sound_speed_, m_, hh_, volume_, av_factor_;
