@@ -946,6 +946,9 @@ void read_observables(const Reporter& r, const View& root, CaseSpec& spec) {
     if (index < 0) o.fail(k, "names no body: \"" + name + "\"; the bodies are " + join_quoted(names));
   };
   body("taylor_bar", obs.taylor_bar, obs.taylor_bar_index);
+  if (obs.taylor_bar_index >= 0 && spec.bodies[static_cast<std::size_t>(obs.taylor_bar_index)].shape == Shape::Sphere)
+    o.fail("taylor_bar", "\"" + obs.taylor_bar + "\" is a sphere; the Taylor-bar observables (final length, impact-face "
+                         "diameter) measure a bar: a cylinder, or a box along z");
   body("projectile", obs.projectile, obs.projectile_index);
   body("target", obs.target, obs.target_index);
   if (obs.target_index >= 0 && obs.projectile_index < 0)

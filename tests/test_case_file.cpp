@@ -341,6 +341,11 @@ TEST(CaseFileErrors, SphereKeys) {
   expect_error(t, "bodies[1].center", "not of a cylinder (shape = \"disk\")", -1);
   t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]", "max = [\"10 mm\", \"10 mm\", \"2 mm\"]\nradius = \"1 mm\"");
   expect_error(t, "bodies[0].radius", "\"radius\" is a key of a cylinder or a sphere, not of a box", -1);
+
+  // A sphere is no Taylor bar (its observables measure a bar's length and impact face).
+  t = kSphere + "\n[observables]\ntaylor_bar = \"projectile\"\n";
+  expect_error(t, "observables.taylor_bar", "\"projectile\" is a sphere; the Taylor-bar observables", line_of(t, "taylor_bar ="));
+  EXPECT_NO_THROW(parse_case_string(kSphere + "\n[observables]\nprojectile = \"projectile\"\ntarget = \"plate\"\n", "case.toml"));
 }
 
 TEST(CaseFileErrors, InvalidToml) {
