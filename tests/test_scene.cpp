@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/case_file.hpp"
+#include "common/case_observables.hpp"
 #include "common/errors.hpp"
 #include "common/scene.hpp"
 
@@ -253,6 +254,9 @@ TEST(Scene, QuarterAndEighthSphere) {
   EXPECT_NEAR(dmin[0], 0.5 * dx, eps);
   EXPECT_NEAR(dmin[1], 0.5 * dx, eps);
 
+  // Whole-body masses (case observables) count the sphere 4 times: it reaches across both planes.
+  EXPECT_EQ(symmetry_multiplicity(s, 0), 4);
+
   // A third plane through the centre, on the side that a plate below the sphere decides: an eighth.
   s.bodies.push_back(box("plate", {c.x, c.y, -5e-3}, {c.x + 8e-3, c.y + 8e-3, -3e-3}));
   s.symmetry.push_back({2, c.z});
@@ -261,6 +265,8 @@ TEST(Scene, QuarterAndEighthSphere) {
   for (std::size_t i = 0; i < eighth.bodies[0].particle_count; ++i) {
     EXPECT_LT(eighth.particles.pos[i].z, c.z - 0.5 * dx + eps);
   }
+  EXPECT_EQ(symmetry_multiplicity(s, 0), 8);
+  EXPECT_EQ(symmetry_multiplicity(s, 1), 1);  // the plate lies on one side of every plane
 }
 
 TEST(SceneErrors, SphereGeometry) {
