@@ -186,6 +186,13 @@ PlugForm plug_form(const CaseSpec& spec) {
   }
   // Cross-section normal to the impact axis and extent along it; false when the body lies sideways.
   auto section = [&](const BodySpec& b, double& area, double& length) {
+    if (b.shape == Shape::Sphere) {
+      // The projectile's cross-section, and the length that gives its volume (4/3 r): the plug of a
+      // sphere is the cylinder of its cross-section through the plate.
+      area = kPi * b.radius * b.radius;
+      length = 4.0 / 3.0 * b.radius;
+      return true;
+    }
     if (b.shape == Shape::Cylinder) {
       if (b.axis != axis) return false;
       area = kPi * b.radius * b.radius;
@@ -198,6 +205,10 @@ PlugForm plug_form(const CaseSpec& spec) {
     length = b.box_max[axis] - b.box_min[axis];
     return true;
   };
+  if (tb.shape == Shape::Sphere) {
+    f.why = "the target is a sphere (no plate thickness)";
+    return f;
+  }
   double area_p, length_p, area_t, thickness;
   if (!section(pb, area_p, length_p) || !section(tb, area_t, thickness)) {
     f.why = "a cylinder's axis is not the impact direction";

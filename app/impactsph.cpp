@@ -40,7 +40,9 @@ struct CaseArgs {
   std::vector<std::string> sets;
 };
 
-const char* shape_name(const BodySpec& b) { return b.shape == Shape::Box ? "box" : "cylinder"; }
+const char* shape_name(const BodySpec& b) {
+  return b.shape == Shape::Box ? "box" : (b.shape == Shape::Sphere ? "sphere" : "cylinder");
+}
 
 void print_scene(const Scene& scene, double dt) {
   const CaseSpec& s = scene.spec;

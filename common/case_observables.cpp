@@ -67,6 +67,9 @@ int symmetry_multiplicity(const CaseSpec& spec, int body) {
     if (b.shape == Shape::Box) {
       lo = b.box_min[plane.axis];
       hi = b.box_max[plane.axis];
+    } else if (b.shape == Shape::Sphere) {
+      lo = b.center[plane.axis] - b.radius;
+      hi = b.center[plane.axis] + b.radius;
     } else if (plane.axis == b.axis) {
       lo = std::min(b.base[plane.axis], b.base[plane.axis] + b.length);
       hi = std::max(b.base[plane.axis], b.base[plane.axis] + b.length);

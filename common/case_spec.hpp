@@ -18,7 +18,7 @@ struct MaterialSpec {
   int line = 0;            // line of [materials.NAME] in the case file, for messages (0: unknown)
 };
 
-enum class Shape { Box, Cylinder };
+enum class Shape { Box, Cylinder, Sphere };
 
 struct BodySpec {
   std::string name;
@@ -28,7 +28,8 @@ struct BodySpec {
   Vec3d box_min{0, 0, 0}, box_max{0, 0, 0};  // Box
   Vec3d base{0, 0, 0};     // Cylinder: centre of the base face, m
   int axis = 2;            // Cylinder: 0, 1, 2 for x, y, z
-  double radius = 0;       // Cylinder, m
+  double radius = 0;       // Cylinder, Sphere, m
+  Vec3d center{0, 0, 0};   // Sphere: centre, m
   double length = 0;       // Cylinder: extent along +axis from the base, m
   Vec3d velocity{0, 0, 0}; // initial velocity, m/s
   // Variable smoothing length (X eqs 9-10): dh/dt = (1/3) h div v, kept within

@@ -10,7 +10,10 @@
 //             of dx leaves a gap of equal width at both faces (the lattice is centred in the box).
 //   cylinder: layers at base + (k + 1/2) dx along the axis, k < round(length/dx); in each layer a square
 //             lattice at offsets (i + 1/2) dx from the axis, kept where the distance to the axis is at
-//             most the radius. Every particle centre lies inside its shape.
+//             most the radius.
+//   sphere:   a cubic lattice at offsets (i + 1/2) dx from the centre on every axis, kept where the
+//             distance to the centre is at most the radius (x fastest, then y, then z).
+// Every particle centre lies inside its shape.
 // Each particle carries the mass rho0 dx^3 of its lattice cell (so a box that is a whole number of cells
 // has exactly the mass rho0 V), density rho0, zero energy, stress and damage, and h = h_factor dx.
 #include <algorithm>
@@ -64,6 +67,7 @@ void cross_axes(int axis, int& u, int& v) {
 // The shape's own bounding box (not the particles').
 Box3 shape_bounds(const BodySpec& b) {
   if (b.shape == Shape::Box) return {b.box_min, b.box_max};
+  if (b.shape == Shape::Sphere) return Box3{b.center, b.center}.grown(b.radius);
   int u, v;
   cross_axes(b.axis, u, v);
   Box3 out{b.base, b.base};
@@ -80,6 +84,10 @@ bool strictly_inside(const BodySpec& b, const Vec3d& p, double eps) {
     for (int a = 0; a < 3; ++a)
       if (!(p[a] > b.box_min[a] + eps && p[a] < b.box_max[a] - eps)) return false;
     return true;
+  }
+  if (b.shape == Shape::Sphere) {
+    const double rin = b.radius - eps;
+    return rin > 0 && norm2(p - b.center) < rin * rin;
   }
   const double t = p[b.axis] - b.base[b.axis];
   if (!(t > eps && t < b.length - eps)) return false;
@@ -127,6 +135,34 @@ std::vector<Vec3d> lattice(const CaseSpec& spec, std::size_t k, double dx) {
       for (long long iy = 0; iy < n[1]; ++iy)
         for (long long ix = 0; ix < n[0]; ++ix)
           pts.push_back({start[0] + double(ix) * dx, start[1] + double(iy) * dx, start[2] + double(iz) * dx});
+    return pts;
+  }
+
+  if (b.shape == Shape::Sphere) {
+    // 1e-9: a diameter of exactly two cells up to rounding is accepted (it holds the 8 points at
+    // (+-1/2, +-1/2, +-1/2) dx).
+    if (b.radius < dx * (1 - 1e-9))
+      throw CaseError(spec.source_file, b.line, key,
+                      body_name(spec, k) + " has a diameter of " + format_quantity(2 * b.radius, Dimension::Length) +
+                          thin_hint);
+    const double estimate = 4.0 / 3.0 * Constants<double>::pi * std::pow(b.radius / dx, 3);
+    if (estimate > kMaxParticles)
+      throw CaseError(spec.source_file, b.line, key,
+                      body_name(spec, k) + " would hold about " + format_quantity(estimate, Dimension::Dimensionless) +
+                          " particles at spacing " + format_quantity(dx, Dimension::Length) +
+                          " (at most 1e9); use a coarser numerics.spacing");
+    // Offsets (i + 1/2) dx from the centre on every axis, as the cross-section of a cylinder: a plane
+    // through the centre lies halfway between two lattice layers, so two or three planes through it
+    // cut an exact quarter or eighth. The same relative tolerance keeps points exactly on the sphere.
+    const long long mi = static_cast<long long>(std::ceil(b.radius / dx));
+    const double r2 = sqr(b.radius) * (1 + 1e-12);
+    pts.reserve(static_cast<std::size_t>(estimate * 1.1) + 8);
+    for (long long kz = -mi; kz < mi; ++kz)
+      for (long long jy = -mi; jy < mi; ++jy)
+        for (long long ix = -mi; ix < mi; ++ix) {
+          const Vec3d o{(double(ix) + 0.5) * dx, (double(jy) + 0.5) * dx, (double(kz) + 0.5) * dx};
+          if (norm2(o) <= r2) pts.push_back(b.center + o);
+        }
     return pts;
   }
 
@@ -310,7 +346,7 @@ void clip_to_symmetry(const CaseSpec& spec, std::vector<std::vector<Vec3d>>& pts
                             where(closest) + ", closer than half the spacing (" +
                             format_quantity(2 * min_d, Dimension::Length) +
                             ") to its own mirror image; the plane must lie halfway between two layers of the "
-                            "body's lattice (for a cylinder cut by the plane: its axis in the plane)");
+                            "body's lattice (for a cylinder cut by the plane: its axis in the plane; for a sphere: its centre)");
       kept.push_back(p);
     }
     if (kept.empty() && !pts[k].empty())

@@ -265,7 +265,88 @@ TEST(CaseFile, VelocityForms) {
   EXPECT_NEAR(s.bodies[1].velocity.z, -298 * 0.8, 1e-12);
 }
 
+namespace {
+// kBase with the cylindrical projectile replaced by a sphere.
+std::string sphere_case() {
+  return with("shape = \"cylinder\"\nbase = [\"5 mm\", \"5 mm\", \"2 mm\"]\naxis = \"z\"\nradius = \"2 mm\"\nlength = \"5 mm\"\n",
+              "shape = \"sphere\"\ncenter = [\"5 mm\", \"5 mm\", \"4.5 mm\"]\nradius = \"2 mm\"\n");
+}
+}  // namespace
+
+TEST(CaseFile, ReadsASphere) {
+  const std::string kSphere = sphere_case();
+  const CaseSpec s = parse_case_string(kSphere, "case.toml");
+  ASSERT_EQ(s.bodies.size(), 2u);
+  const auto& p = s.bodies[1];
+  EXPECT_EQ(p.shape, impactsph::Shape::Sphere);
+  EXPECT_DOUBLE_EQ(p.center.x, 5e-3);
+  EXPECT_DOUBLE_EQ(p.center.y, 5e-3);
+  EXPECT_DOUBLE_EQ(p.center.z, 4.5e-3);
+  EXPECT_DOUBLE_EQ(p.radius, 2e-3);
+  EXPECT_DOUBLE_EQ(p.velocity.z, -298);
+  EXPECT_EQ(p.material_index, 1);
+  // Bare numbers are metres, as for every length.
+  const CaseSpec t = parse_case_string(with("radius = \"2 mm\"", "radius = 0.002", kSphere), "case.toml");
+  EXPECT_DOUBLE_EQ(t.bodies[1].radius, 2e-3);
+}
+
 // ---- one test per class of bad input ----
+
+TEST(CaseFileErrors, SphereKeys) {
+  const std::string kSphere = sphere_case();
+  const int body_line = line_of(kSphere, "name = \"projectile\"") - 1;  // its [[bodies]] header
+  ASSERT_EQ(kSphere.substr(kSphere.find("[[bodies]]\nname = \"projectile\""), 10), "[[bodies]]");
+
+  // Required keys, reported at the line of the body's table.
+  std::string t = with("center = [\"5 mm\", \"5 mm\", \"4.5 mm\"]\n", "", kSphere);
+  expect_error(t, "bodies[1].center", "missing in a body; expected an array of 3 values", body_line);
+  t = with("radius = \"2 mm\"\n", "", kSphere);
+  expect_error(t, "bodies[1].radius", "missing in a body; expected a length such as", body_line);
+
+  // Values.
+  t = with("radius = \"2 mm\"", "radius = \"0 mm\"", kSphere);
+  expect_error(t, "bodies[1].radius", "must be greater than zero (got 0 mm)", line_of(t, "radius = "));
+  t = with("radius = \"2 mm\"", "radius = \"-2 mm\"", kSphere);
+  expect_error(t, "bodies[1].radius", "must be greater than zero (got -2 mm)", line_of(t, "radius = "));
+  t = with("radius = \"2 mm\"", "radius = \"2 m/s\"", kSphere);
+  expect_error(t, "bodies[1].radius", "\"2 m/s\" is a velocity; expected a length", line_of(t, "radius = "));
+  t = with("center = [\"5 mm\", \"5 mm\", \"4.5 mm\"]", "center = [\"5 mm\", \"5 mm\"]", kSphere);
+  expect_error(t, "bodies[1].center", "has 2 entries; expected 3 lengths (x, y, z)", line_of(t, "center = "));
+  t = with("center = [\"5 mm\", \"5 mm\", \"4.5 mm\"]", "center = \"5 mm\"", kSphere);
+  expect_error(t, "bodies[1].center", "expected an array of 3 lengths", line_of(t, "center = "));
+  t = with("center = [\"5 mm\", \"5 mm\", \"4.5 mm\"]", "center = [\"5 mm\", \"5 GPa\", \"4.5 mm\"]", kSphere);
+  expect_error(t, "bodies[1].center[1]", "is a pressure; expected a length", line_of(t, "center = "));
+
+  // Keys of the other shapes, named as such, with the sphere's valid keys.
+  const std::string valid = "valid keys: name, material, shape, velocity, direction, variable_h, h_min, h_max, center, radius";
+  for (const std::string& extra : {"axis = \"z\"", "length = \"5 mm\"", "base = [\"5 mm\", \"5 mm\", \"2 mm\"]"}) {
+    SCOPED_TRACE(extra);
+    t = with("radius = \"2 mm\"\n", "radius = \"2 mm\"\n" + extra + "\n", kSphere);
+    const std::string k = extra.substr(0, extra.find(' '));
+    expect_error(t, "bodies[1]." + k, "\"" + k + "\" is a key of a cylinder, not of a sphere (shape = \"sphere\"); " + valid,
+                 line_of(t, extra));
+  }
+  t = with("radius = \"2 mm\"\n", "radius = \"2 mm\"\nmax = [\"1 mm\", \"1 mm\", \"1 mm\"]\n", kSphere);
+  expect_error(t, "bodies[1].max", "\"max\" is a key of a box, not of a sphere", line_of(t, "max = [\"1 mm\""));
+  // A misspelt key is unknown, with a suggestion.
+  t = with("center =", "centre =", kSphere);
+  expect_error(t, "bodies[1].centre", "unknown key \"centre\" in a body; did you mean \"center\"? " + valid,
+               line_of(t, "centre ="));
+
+  // The other way round: a sphere's key on a cylinder or a box.
+  t = with("length = \"5 mm\"\n", "length = \"5 mm\"\ncenter = [\"5 mm\", \"5 mm\", \"4.5 mm\"]\n");
+  expect_error(t, "bodies[1].center", "\"center\" is a key of a sphere, not of a cylinder (shape = \"cylinder\")",
+               line_of(t, "center = "));
+  t = with("shape = \"cylinder\"", "shape = \"disk\"", t);
+  expect_error(t, "bodies[1].center", "not of a cylinder (shape = \"disk\")", -1);
+  t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]", "max = [\"10 mm\", \"10 mm\", \"2 mm\"]\nradius = \"1 mm\"");
+  expect_error(t, "bodies[0].radius", "\"radius\" is a key of a cylinder or a sphere, not of a box", -1);
+
+  // A sphere is no Taylor bar (its observables measure a bar's length and impact face).
+  t = kSphere + "\n[observables]\ntaylor_bar = \"projectile\"\n";
+  expect_error(t, "observables.taylor_bar", "\"projectile\" is a sphere; the Taylor-bar observables", line_of(t, "taylor_bar ="));
+  EXPECT_NO_THROW(parse_case_string(kSphere + "\n[observables]\nprojectile = \"projectile\"\ntarget = \"plate\"\n", "case.toml"));
+}
 
 TEST(CaseFileErrors, InvalidToml) {
   const std::string t = with("name = \"test\"", "name = \"test");
@@ -396,8 +477,9 @@ TEST(CaseFileErrors, UnknownKindsListValidOnes) {
   t = with("kind = \"elastic\"", "kind = \"plastic\"");
   expect_error(t, "materials.steel.strength.kind",
                "\"hydrodynamic\", \"elastic\", \"perfectly-plastic\", \"johnson-cook\"", -1);
-  t = with("shape = \"box\"", "shape = \"sphere\"");
-  expect_error(t, "bodies[0].shape", "valid: \"box\", \"cylinder\", \"disk\", \"plate\"", line_of(t, "sphere"));
+  t = with("shape = \"box\"", "shape = \"sphre\"");
+  expect_error(t, "bodies[0].shape", "did you mean \"sphere\"? valid: \"box\", \"cylinder\", \"disk\", \"plate\", \"sphere\"",
+               line_of(t, "sphre"));
   t = with("spacing = \"0.5 mm\"", "spacing = \"0.5 mm\"\nkernel = \"gaussian\"");
   expect_error(t, "numerics.kernel", "\"wendland-c2\", \"cubic-spline\"", -1);
   t = with("specific_heat", "damage = { kind = \"gurson\" }\nspecific_heat");

@@ -1,11 +1,13 @@
-// Scene builder (common/scene.hpp): lattice counts, positions and masses for boxes and cylinders, and
+// Scene builder (common/scene.hpp): lattice counts, positions and masses for boxes, cylinders and spheres, and
 // the geometry errors (thin bodies, overlaps, symmetry planes, fixed regions that select nothing).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "common/case_file.hpp"
+#include "common/case_observables.hpp"
 #include "common/errors.hpp"
 #include "common/scene.hpp"
 
@@ -51,6 +53,17 @@ BodySpec cylinder(const std::string& name, Vec3d base, int axis, double radius, 
   b.axis = axis;
   b.radius = radius;
   b.length = length;
+  return b;
+}
+
+BodySpec sphere(const std::string& name, Vec3d center, double radius) {
+  BodySpec b;
+  b.name = name;
+  b.material = "steel";
+  b.material_index = 0;
+  b.shape = Shape::Sphere;
+  b.center = center;
+  b.radius = radius;
   return b;
 }
 
@@ -164,6 +177,127 @@ TEST(Scene, CylinderAlongX) {
     EXPECT_LT(q.x, 1e-3 + len);
     EXPECT_LE(std::pow(q.y - 2e-3, 2) + std::pow(q.z - 3e-3, 2), r * r * (1 + 1e-9));
   }
+}
+
+TEST(Scene, SmallSphereCountAndOrder) {
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  // r = dx, the smallest sphere: the 8 points (+-1/2, +-1/2, +-1/2) dx, x fastest, then y, then z.
+  s.bodies.push_back(sphere("ball", {1e-3, 2e-3, 3e-3}, dx));
+  Scene scene = build_scene(s);
+  ASSERT_EQ(scene.particles.size(), 8u);
+  expect_near_vec(scene.particles.pos[0], {0.5e-3, 1.5e-3, 2.5e-3}, 1e-15);
+  expect_near_vec(scene.particles.pos[1], {1.5e-3, 1.5e-3, 2.5e-3}, 1e-15);
+  expect_near_vec(scene.particles.pos[2], {0.5e-3, 2.5e-3, 2.5e-3}, 1e-15);
+  expect_near_vec(scene.particles.pos[4], {0.5e-3, 1.5e-3, 3.5e-3}, 1e-15);
+  // r = 2 dx: offsets (i + 1/2) dx with |o|^2 <= 4 dx^2: the 8 of (1/2, 1/2, 1/2) and the 24 of
+  // (1/2, 1/2, 3/2) and its permutations (|o|^2 = 2.75 dx^2); (1/2, 3/2, 3/2) is at 4.75 dx^2.
+  s.bodies[0] = sphere("ball", {0, 0, 0}, 2 * dx);
+  scene = build_scene(s);
+  ASSERT_EQ(scene.particles.size(), 32u);
+  EXPECT_NEAR(scene.bodies[0].initial_mass, 32 * kRho * dx * dx * dx, 1e-15);
+  for (const Vec3d& q : scene.particles.pos) EXPECT_LE(norm2(q), 4 * dx * dx * (1 + 1e-12));
+}
+
+TEST(Scene, SphereCountAndMassApproachTheBall) {
+  // The particle count times dx^3 approaches (4/3) pi r^3 as dx shrinks, not monotonically (lattice points
+  // in a ball: the error is of the order of the surface cells, and oscillates). Measured relative errors
+  // of count dx^3 (and of the mass, rho0 dx^3 per particle) against (4/3) pi r^3:
+  //   r/dx = 8: 2176 particles, +1.46 %;  16: 17256, +0.58 %;  32: 137376, +0.086 %.
+  // The bounds are those figures rounded up (2 %, 1 %, 0.2 %): each is below the error the coarser
+  // spacing allows, so the test fails if the lattice stops converging.
+  const double r = 4e-3;
+  const Vec3d c{1e-3, -2e-3, 3e-3};
+  const struct {
+    int n;
+    std::size_t count;
+    double bound;
+  } cases[] = {{8, 2176, 0.02}, {16, 17256, 0.01}, {32, 137376, 0.002}};
+  for (const auto& k : cases) {
+    SCOPED_TRACE(k.n);
+    const double dx = r / k.n;
+    CaseSpec s = spec_with_spacing(dx);
+    s.bodies.push_back(sphere("ball", c, r));
+    const Scene scene = build_scene(s);
+    EXPECT_EQ(scene.particles.size(), k.count);
+    const double volume = 4.0 / 3.0 * Constants<double>::pi * r * r * r;
+    const double count_error = double(scene.particles.size()) * dx * dx * dx / volume - 1;
+    EXPECT_LT(std::abs(count_error), k.bound);
+    EXPECT_LT(std::abs(scene.bodies[0].initial_mass / (kRho * volume) - 1), k.bound);
+    for (const Vec3d& q : scene.particles.pos) EXPECT_LE(norm(q - c), r * (1 + 1e-9));
+  }
+}
+
+TEST(Scene, QuarterAndEighthSphere) {
+  // Planes through the centre lie halfway between lattice layers (offsets (i + 1/2) dx), as for a
+  // cylinder: two planes keep exactly a quarter of the particles, three an eighth, and the layer next to
+  // each plane is dx/2 from it.
+  const double dx = 0.5e-3, r = 3.435e-3;
+  const Vec3d c{1e-3, -2e-3, 3.5e-3};
+  CaseSpec s = spec_with_spacing(dx);
+  s.bodies.push_back(sphere("ball", c, r));
+  const Scene whole = build_scene(s);
+  ASSERT_EQ(whole.particles.size(), 1376u);
+  s.symmetry.push_back({0, c.x});
+  s.symmetry.push_back({1, c.y});
+  const Scene quarter = build_scene(s);
+  EXPECT_EQ(quarter.particles.size() * 4, whole.particles.size());
+  EXPECT_EQ(quarter.bodies[0].particle_count, 344u);
+  EXPECT_NEAR(quarter.bodies[0].initial_mass * 4, whole.bodies[0].initial_mass, 1e-12 * whole.bodies[0].initial_mass);
+  const double eps = 1e-9 * dx;
+  double dmin[3] = {1, 1, 1};
+  for (const Vec3d& q : quarter.particles.pos)
+    for (int a = 0; a < 2; ++a) {
+      EXPECT_GT(q[a] - c[a], 0.5 * dx - eps);  // centred on the planes: the positive side, on the tie
+      dmin[a] = std::min(dmin[a], q[a] - c[a]);
+    }
+  EXPECT_NEAR(dmin[0], 0.5 * dx, eps);
+  EXPECT_NEAR(dmin[1], 0.5 * dx, eps);
+
+  // Whole-body masses (case observables) count the sphere 4 times: it reaches across both planes.
+  EXPECT_EQ(symmetry_multiplicity(s, 0), 4);
+
+  // A third plane through the centre, on the side that a plate below the sphere decides: an eighth.
+  s.bodies.push_back(box("plate", {c.x, c.y, -5e-3}, {c.x + 8e-3, c.y + 8e-3, -3e-3}));
+  s.symmetry.push_back({2, c.z});
+  const Scene eighth = build_scene(s);
+  EXPECT_EQ(eighth.bodies[0].particle_count * 8, whole.particles.size());
+  for (std::size_t i = 0; i < eighth.bodies[0].particle_count; ++i) {
+    EXPECT_LT(eighth.particles.pos[i].z, c.z - 0.5 * dx + eps);
+  }
+  EXPECT_EQ(symmetry_multiplicity(s, 0), 8);
+  EXPECT_EQ(symmetry_multiplicity(s, 1), 1);  // the plate lies on one side of every plane
+}
+
+TEST(SceneErrors, SphereGeometry) {
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  // Thinner than two particles.
+  s.bodies.push_back(sphere("shot", {0, 0, 0}, 0.9 * dx));
+  s.bodies[0].line = 12;
+  CaseError e = scene_error(s);
+  EXPECT_EQ(e.key(), "bodies[0]");
+  EXPECT_EQ(e.line(), 12);
+  EXPECT_TRUE(Contains(e.what(), "\"shot\" has a diameter of 1.8 mm at spacing 1 mm"));
+  EXPECT_TRUE(Contains(e.what(), "make it at least 2 mm"));
+
+  // Overlap with a plate: a plate particle inside the ball.
+  s.bodies[0] = box("plate", {-5 * dx, -5 * dx, -2 * dx}, {5 * dx, 5 * dx, 0});
+  s.bodies.push_back(sphere("ball", {0, 0, 2 * dx}, 3 * dx));
+  e = scene_error(s);
+  EXPECT_EQ(e.key(), "bodies[1]");
+  EXPECT_TRUE(Contains(e.what(), "\"ball\" overlaps bodies[0] (\"plate\"): the particle of \"plate\" at (-0.5 mm, -1.5 mm, -0.5 mm) lies inside \"ball\""));
+  // Resting on it (centre one radius above its top face) is fine.
+  s.bodies[1].center.z = 3 * dx;
+  EXPECT_NO_THROW(build_scene(s));
+
+  // A symmetry plane 0.4 dx off the centre leaves particles 0.1 dx from it.
+  s.bodies.pop_back();
+  s.bodies[0] = sphere("ball", {0, -0.4 * dx, 0}, 3 * dx);
+  s.symmetry.push_back({1, 0.0});
+  e = scene_error(s);
+  EXPECT_EQ(e.key(), "bodies[0]");
+  EXPECT_TRUE(Contains(e.what(), "is 100 um from the symmetry plane y = 0 mm (boundaries.symmetry[0])"));
 }
 
 TEST(Scene, BuildIsDeterministic) {
