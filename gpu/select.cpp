@@ -1,6 +1,8 @@
 // Which build of the gpu port runs: CUDA when it is built and a device is present, else the host build.
 #include "gpu/solver.hpp"
 
+#include <stdexcept>
+
 namespace impactsph::gpu {
 
 bool cuda_built() {
