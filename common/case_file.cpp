@@ -331,6 +331,12 @@ const Keys kDamageKinds{"none", "critical-plastic-strain", "johnson-cook", "john
 void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
   const std::string kind = e.choice("kind", kEosKinds);
   needs_bulk_modulus = false;
+  if (e.has("min_pressure")) {
+    p.min_pressure = e.quantity("min_pressure", Dimension::Pressure);
+    e.range("min_pressure", p.min_pressure, -kMaxModulus, 0, Dimension::Pressure, false, false,
+            "the pressure cutoff is the largest tension the material carries, a negative pressure such as "
+            "\"-1.2 GPa\" (0: no tension)");
+  }
   auto modulus = [&](const std::string& k) {
     const double v = e.quantity(k, Dimension::Pressure);
     e.range(k, v, kMinModulus, kMaxModulus, Dimension::Pressure, false, false, kModulusHint);
@@ -357,24 +363,24 @@ void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
     return v;
   };
   if (kind == "linear") {
-    e.allow({"kind", "bulk_modulus"});
+    e.allow({"kind", "bulk_modulus", "min_pressure"});
     p.kind = EosKind::Linear;
     if (e.has("bulk_modulus")) p.k1 = modulus("bulk_modulus");
     else needs_bulk_modulus = true;  // may come from youngs_modulus + poisson_ratio in the strength table
   } else if (kind == "polynomial") {
-    e.allow({"kind", "k1", "k2", "k3"});
+    e.allow({"kind", "k1", "k2", "k3", "min_pressure"});
     p.kind = EosKind::Polynomial;
     p.k1 = modulus("k1");
     p.k2 = coefficient("k2");
     p.k3 = coefficient("k3");
   } else if (kind == "mie-gruneisen") {
-    e.allow({"kind", "c0", "s", "gamma0"});
+    e.allow({"kind", "c0", "s", "gamma0", "min_pressure"});
     p.kind = EosKind::MieGruneisen;
     p.c0 = c0();
     p.s1 = slope("s");
     p.gamma0 = gamma0();
   } else {
-    e.allow({"kind", "c0", "s1", "s2", "s3", "gamma0", "a"});
+    e.allow({"kind", "c0", "s1", "s2", "s3", "gamma0", "a", "min_pressure"});
     p.kind = EosKind::GruneisenCubic;
     p.c0 = c0();
     p.s1 = slope("s1");

@@ -23,6 +23,9 @@ struct EosParams {
   Real s1 = 0, s2 = 0, s3 = 0;  // Us-up slope coefficients (MieGruneisen uses s1 only)
   Real gamma0 = 0;  // Grueneisen coefficient
   Real a = 0;       // first-order volume correction to gamma0 (GruneisenCubic)
+  // Pressure cutoff, Pa (<= 0; LS-DYNA's PC of *MAT_NULL): the EOS pressure is held at or above it, so a
+  // material with no strength and no failure model cannot carry unbounded tension. -1e30: no cutoff.
+  Real min_pressure = Real(-1e30);
 };
 
 template <class Real> IMPACTSPH_HD Real compression(const EosParams<Real>& p, Real rho) { return rho / p.rho0 - Real(1); }
@@ -120,6 +123,7 @@ IMPACTSPH_HD Real eos_pressure(const EosParams<Real>& p, Real rho, Real e, Real&
   Real c2 = dP_drho + P / (rho * rho) * dP_de;
   if (!(c2 > Real(0.25) * c2_ref)) c2 = Real(0.25) * c2_ref;
   sound_speed = std::sqrt(c2);
+  if (P < p.min_pressure) P = p.min_pressure;  // the cutoff (a NaN pressure stays NaN)
   return P;
 }
 

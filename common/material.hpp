@@ -78,6 +78,7 @@ template <class To, class From> MaterialParams<To> convert_material(const Materi
   r.eos.kind = e.kind;
   r.eos.rho0 = To(e.rho0); r.eos.k1 = To(e.k1); r.eos.k2 = To(e.k2); r.eos.k3 = To(e.k3); r.eos.c0 = To(e.c0);
   r.eos.s1 = To(e.s1); r.eos.s2 = To(e.s2); r.eos.s3 = To(e.s3); r.eos.gamma0 = To(e.gamma0); r.eos.a = To(e.a);
+  r.eos.min_pressure = To(e.min_pressure);
   const StrengthParams<From>& s = m.strength;
   r.strength.kind = s.kind;
   r.strength.shear_modulus = To(s.shear_modulus); r.strength.yield_stress = To(s.yield_stress);

@@ -254,6 +254,29 @@ TEST(CaseFile, OtherEosKindsAndDerivedBulkModulus) {
   EXPECT_EQ(s.materials[0].params.strength.kind, impactsph::StrengthKind::Hydrodynamic);
 }
 
+TEST(CaseFile, EosPressureCutoff) {
+  const std::string eos = "eos = { kind = \"mie-gruneisen\", c0 = \"3940 m/s\", s = 1.489, gamma0 = 2.02 }";
+  auto copper = [](const CaseSpec& c) {
+    for (const auto& m : c.materials)
+      if (m.name == "copper") return m.params.eos;
+    ADD_FAILURE() << "no material copper";
+    return impactsph::EosParams<double>{};
+  };
+  CaseSpec s = parse_case_string(kBase, "case.toml");
+  EXPECT_EQ(copper(s).min_pressure, -1e30);  // no cutoff unless asked for
+  std::string t = with(eos, "eos = { kind = \"mie-gruneisen\", c0 = \"3940 m/s\", s = 1.489, gamma0 = 2.02, "
+                            "min_pressure = \"-1.2 GPa\" }");
+  s = parse_case_string(t, "case.toml");
+  EXPECT_DOUBLE_EQ(copper(s).min_pressure, -1.2e9);
+  t = with(eos, "eos = { kind = \"mie-gruneisen\", c0 = \"3940 m/s\", s = 1.489, gamma0 = 2.02, "
+                "min_pressure = \"1.2 GPa\" }");
+  expect_error(t, "materials.copper.eos.min_pressure", "at most 0 Pa (got 1.2 GPa); the pressure cutoff is the largest "
+               "tension the material carries", line_of(t, "min_pressure"));
+  t = with(eos, "eos = { kind = \"mie-gruneisen\", c0 = \"3940 m/s\", s = 1.489, gamma0 = 2.02, "
+                "min_pressure = \"-1.2 mm\" }");
+  expect_error(t, "materials.copper.eos.min_pressure", "is a length; expected a pressure", line_of(t, "min_pressure"));
+}
+
 TEST(CaseFile, VelocityForms) {
   std::string t = with("velocity = \"298 m/s\"\ndirection = [0, 0, -1]", "velocity = [\"0 m/s\", \"0.1 km/s\", -300]");
   CaseSpec s = parse_case_string(t, "case.toml");

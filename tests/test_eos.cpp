@@ -167,6 +167,27 @@ TYPED_TEST(EosTyped, MieGruneisenTensionBranch) {
   }
 }
 
+// The pressure cutoff (min_pressure, LS-DYNA's PC): the EOS pressure is held at or above it, the sound
+// speed is the EOS's, compression is untouched, and without a cutoff the tension is the EOS's.
+TYPED_TEST(EosTyped, PressureCutoffBoundsTension) {
+  using Real = TypeParam;
+  auto p = steel_4340_mg<Real>();
+  const Real rho = Real(double(p.rho0) * 0.9), e = Real(0);
+  Real c_free = 0, c_cut = 0;
+  const Real free_tension = eos_pressure(p, rho, e, c_free);
+  ASSERT_LT(free_tension, Real(-1e9));  // mu = -0.1 of steel: about -15 GPa
+  p.min_pressure = Real(-1.2e9);
+  EXPECT_EQ(eos_pressure(p, rho, e, c_cut), Real(-1.2e9));
+  EXPECT_EQ(c_cut, c_free);
+  const Real rho_c = Real(double(p.rho0) * 1.05);
+  Real c1 = 0;
+  auto q = p;
+  q.min_pressure = Real(-1e30);
+  EXPECT_EQ(eos_pressure(p, rho_c, e, c1), eos_pressure(q, rho_c, e, c1));
+  // A NaN state stays NaN (the divergence check must still see it).
+  EXPECT_TRUE(std::isnan(double(eos_pressure(p, Real(NAN), e, c1))));
+}
+
 // Central finite differences of P in rho (at fixed e) and in e (at fixed rho). double; step 1e-6 relative:
 // truncation ~ (1e-6)^2 relative, rounding ~ eps P/(delta dP) ~ 1e-11 relative: 1e-7 relative tolerance.
 // States stay away from the kink at mu = 0.
