@@ -9,9 +9,11 @@ cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build}
 JOBS=${JOBS:-$(nproc)}
 
-# Debian packages the build needs; installed only when one is missing.
+# Debian packages the build needs; installed only when one is missing. libthrust-dev (Thrust 1.17) is for
+# the gpu port's host build on a machine without the CUDA toolkit; with the toolkit, CMake takes the
+# toolkit's own Thrust (CCCL) first.
 PACKAGES=(cmake g++ make libeigen3-dev libgsl-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-          libgtest-dev libbenchmark-dev gnuplot-nox)
+          libgtest-dev libbenchmark-dev gnuplot-nox libthrust-dev)
 
 install_missing() {
   local missing=()
