@@ -1,11 +1,12 @@
-# Drawn by impactsph verify; run `gnuplot convergence.png` in the report folder to redraw.
-set terminal pngcairo size 1000,650 enhanced font 'Sans,11'
+# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the
+# output path below is relative to it).
+set terminal pngcairo size 1000,750 enhanced font 'Sans,11'
 set output 'verification/reports/full/convergence.png'
 set title 'Convergence against the closed forms (|relative error| against spacing)' noenhanced
 set xlabel 'spacing h [mm]'
 set ylabel '|relative error|'
 set grid
-set key outside right top noenhanced
+set key below left Left reverse noenhanced
 set logscale xy
 set format y '10^{%L}'
 $s0 << EOD

@@ -1,11 +1,12 @@
-# Drawn by impactsph verify; run `gnuplot plate_8mm.png` in the report folder to redraw.
-set terminal pngcairo size 1000,650 enhanced font 'Sans,11'
+# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the
+# output path below is relative to it).
+set terminal pngcairo size 1000,750 enhanced font 'Sans,11'
 set output 'verification/reports/full/plate_8mm.png'
 set title '8 mm Weldox 460 E plate at 298 m/s: residual velocity against spacing' noenhanced
 set xlabel 'spacing h [mm]'
 set ylabel 'residual velocity [m/s]'
 set grid
-set key outside right top noenhanced
+set key below left Left reverse noenhanced
 set xrange [0:*]
 $o0 << EOD
 4 172.9227204

@@ -1,22 +1,23 @@
-# Drawn by impactsph verify; run `gnuplot taylor_bar.png` in the report folder to redraw.
-set terminal pngcairo size 1000,650 enhanced font 'Sans,11'
+# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the
+# output path below is relative to it).
+set terminal pngcairo size 1000,750 enhanced font 'Sans,11'
 set output 'verification/reports/full/taylor_bar.png'
 set title 'Taylor bar (OFHC copper, 190 m/s): final shape against spacing' noenhanced
 set xlabel 'spacing h [mm]'
 set ylabel '[mm]'
 set grid
-set key outside right top noenhanced
+set key below left Left reverse noenhanced
 set xrange [0:*]
 $o0 << EOD
-1.27 19.55886977
-0.8467 18.99019649
+1.27 19.55886975
+0.8467 18.99019643
 0.635 18.63528489
-0.508 18.38961077
+0.508 18.38961072
 EOD
 $o1 << EOD
 1.27 11.94871273
 0.8467 12.05326534
-0.635 12.67347298
+0.635 12.67347297
 0.508 13.32749051
 EOD
 plot $o0 u 1:2 w lp pt 7 ps 1.4 lc rgb '#1f77b4' t 'Taylor bar: final length, simulated', \
