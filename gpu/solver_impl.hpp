@@ -42,6 +42,7 @@
 #include "common/pair_terms.hpp"
 #include "common/smoothing_length.hpp"
 #include "common/timestep.hpp"
+#include "common/verlet.hpp"
 #include "gpu/launch.hpp"
 #include "gpu/solver.hpp"
 
@@ -135,7 +136,7 @@ struct PairContact {
   Real scale;     // K_p
   Real distance;  // contact distance, m (when srad is 0)
   Real srad;      // > 0: the particles touch at srad (h_i + h_j)/2 instead (X eqs 18, 20)
-  IMPACTSPH_GPU_HD Real touch(Real h_i, Real h_j) const { return srad > Real(0) ? srad * Real(0.5) * (h_i + h_j) : distance; }
+  IMPACTSPH_GPU_HD Real touch(Real h_i, Real h_j) const { return contact_touch_distance(srad, distance, h_i, h_j); }
 };
 
 // Variable smoothing length of a body (X eqs 9-10): on or off, and the bounds of h (m).
@@ -405,7 +406,7 @@ class Solver final : public GpuStepper {
     // reach(h_max now) + 2 (displacement + dt vmax) < reach(h_max at the sort) + skin.
     const double vmax = max_speed();
     const double growth = variable_h_ && sorted_ ? search_reach(max_smoothing_length()) - reach_at_sort_ : 0.0;
-    if (!sorted_ || max_displacement() + dt * vmax * 1.01 + 0.5 * growth >= 0.5 * skin_)
+    if (!sorted_ || !verlet_list_holds(max_displacement(), dt, vmax, growth, skin_))
       clock_.time(PhaseClock::Sort, [&] { sort_particles(); });
 
     evaluate(y0_, dt);
@@ -465,7 +466,7 @@ class Solver final : public GpuStepper {
 
   // Search radius without the skin: the kernel support or the contact distance at the largest h (m).
   double search_reach(double h_max) const {
-    return std::max({static_cast<double>(kernel_support(h_max)), contact_reach_, contact_srad_ * h_max});
+    return impactsph::search_reach(static_cast<double>(kernel_support(h_max)), contact_reach_, contact_srad_, h_max);
   }
 
   // The contact power summed over the particles in the scene's order (W), so that the sum does not depend

@@ -15,6 +15,7 @@
 #include "common/smoothing_length.hpp"
 #include "common/material.hpp"
 #include "common/timestep.hpp"
+#include "common/verlet.hpp"
 #include "common/viscosity.hpp"
 
 namespace impactsph::reference {
@@ -205,8 +206,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
         const MaterialParams<double>& mat_i = materials_[static_cast<std::size_t>(mi)];
         const MaterialParams<double>& mat_j = materials_[static_cast<std::size_t>(mat_[j])];
         const Vec3d vij = vi - v_[j];
-        // X eqs 18, 20: touching at SRAD (h_i + h_j)/2, or at a fixed number of spacings.
-        const double touch = c->srad > 0 ? c->srad * 0.5 * (hi + hh_[j]) : c->contact_distance * numerics_.spacing;
+        const double touch = contact_touch_distance(c->srad, c->contact_distance * numerics_.spacing, hi, hh_[j]);
         const Vec3d force = penalty_contact_force(PenaltyContactParams<double>{c->penalty_scale}, xij, vij,
                                                   touch, m_[i], m_[j], hi, hh_[j],
                                                   mat_i.strength.shear_modulus, mat_j.strength.shear_modulus, rhoi,
@@ -295,7 +295,7 @@ void ReferenceSolver::load_constants(const ParticleSet& p) {
 }
 
 double ReferenceSolver::search_reach() const {
-  return std::max({kernel_support(h_max_), contact_reach_, contact_srad_ * h_max_});
+  return impactsph::search_reach(kernel_support(h_max_), contact_reach_, contact_srad_, h_max_);
 }
 
 // Each row of the list is sorted by neighbour index, so that the pair sums are taken in an order that
@@ -316,11 +316,7 @@ void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double ski
   stats_.ghosts = ghosts_.size();
 }
 
-// The Verlet criterion: every pair within reach at any stage of this step was within reach + skin at the
-// build if 2 (largest displacement since the build + dt vmax) + growth of the reach < skin (each of the
-// two particles moved at most that much; by the midpoint a particle has moved dt/2 |v|, and the second
-// evaluation's pairs are at most dt vmax closer than at the step start). The growth is that of a
-// variable smoothing length. The skin is 5 % of the reach.
+// The list is kept while verlet_list_holds (common/verlet.hpp); the skin is 5 % of the reach.
 void ReferenceSolver::update_neighbours(const ParticleSet& p, double dt) {
   const std::size_t n = p.size();
   const std::int64_t ni = static_cast<std::int64_t>(n);
@@ -333,7 +329,7 @@ void ReferenceSolver::update_neighbours(const ParticleSet& p, double dt) {
   }
   const double reach = search_reach();
   const double growth = std::max(0.0, reach - reach_at_build_);
-  if (same && moved + dt * vmax * 1.01 + 0.5 * growth < 0.5 * skin_) return;
+  if (same && verlet_list_holds(moved, dt, vmax, growth, skin_)) return;
   reach_at_build_ = reach;
   skin_ = 0.05 * reach;
   build_neighbours(p.pos, skin_);

@@ -32,23 +32,25 @@ CaseSpec spec_with_spacing(double dx) {
   return s;
 }
 
-BodySpec box(const std::string& name, Vec3d lo, Vec3d hi) {
+// A steel body of the given shape; the callers below set its geometry.
+BodySpec steel_body(const std::string& name, Shape shape) {
   BodySpec b;
   b.name = name;
   b.material = "steel";
   b.material_index = 0;
-  b.shape = Shape::Box;
+  b.shape = shape;
+  return b;
+}
+
+BodySpec box(const std::string& name, Vec3d lo, Vec3d hi) {
+  BodySpec b = steel_body(name, Shape::Box);
   b.box_min = lo;
   b.box_max = hi;
   return b;
 }
 
 BodySpec cylinder(const std::string& name, Vec3d base, int axis, double radius, double length) {
-  BodySpec b;
-  b.name = name;
-  b.material = "steel";
-  b.material_index = 0;
-  b.shape = Shape::Cylinder;
+  BodySpec b = steel_body(name, Shape::Cylinder);
   b.base = base;
   b.axis = axis;
   b.radius = radius;
@@ -57,11 +59,7 @@ BodySpec cylinder(const std::string& name, Vec3d base, int axis, double radius, 
 }
 
 BodySpec sphere(const std::string& name, Vec3d center, double radius) {
-  BodySpec b;
-  b.name = name;
-  b.material = "steel";
-  b.material_index = 0;
-  b.shape = Shape::Sphere;
+  BodySpec b = steel_body(name, Shape::Sphere);
   b.center = center;
   b.radius = radius;
   return b;
