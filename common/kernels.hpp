@@ -60,6 +60,12 @@ template <class Real> IMPACTSPH_HD Real kernel_w(KernelKind k, Real r, Real h) {
 template <class Real> IMPACTSPH_HD Real kernel_grad_factor(KernelKind k, Real r, Real h) {
   return k == KernelKind::WendlandC2 ? wendland_c2_grad_factor(r, h) : cubic_spline_grad_factor(r, h);
 }
+// The same with the kernel fixed at compile time, for pair loops that choose the kernel once outside (no
+// select between the two for every pair).
+template <KernelKind K, class Real> IMPACTSPH_HD Real kernel_grad_factor_of(Real r, Real h) {
+  if constexpr (K == KernelKind::WendlandC2) return wendland_c2_grad_factor(r, h);
+  else return cubic_spline_grad_factor(r, h);
+}
 // grad_i W_ij for x_ij = x_i - x_j.
 template <class Real> IMPACTSPH_HD Vec3<Real> kernel_grad(KernelKind k, Vec3<Real> xij, Real h) {
   return kernel_grad_factor(k, norm(xij), h) * xij;

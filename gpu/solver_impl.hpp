@@ -114,13 +114,28 @@ struct MaxOf {
   template <class T> IMPACTSPH_GPU_HD T operator()(T a, T b) const { return a > b ? a : b; }
 };
 
-// A cheap test before the exact one (r >= kernel_support(h), with r = |x_ij| rounded to Real): true only
-// for pairs clearly beyond the support, with a margin far above the rounding of either test, so the
-// exact test decides every pair near the edge and the results do not change. Saves a square root and the
-// conversions for the quarter of the Verlet list that lies in the skin.
-template <class Real> IMPACTSPH_GPU_HD inline bool outside_support(Vec3p dx, Real h) {
-  const double s = static_cast<double>(kernel_support(h)) * (1.0 + 1e-5);
-  return norm2(dx) > s * s;
+// The pass 1 sums of a particle as plain Reals, the form IMPACTSPH_SIMD_SUMS reduces: L, G (row-major)
+// and the density gradient.
+constexpr int kGradientSums = 21;
+template <class Real> IMPACTSPH_GPU_HD inline void add_flat(Real* sum, const GradientSums<Real>& g) {
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      sum[3 * r + c] += g.L.m[r][c];
+      sum[9 + 3 * r + c] += g.G.m[r][c];
+    }
+  sum[18] += g.grad_rho.x;
+  sum[19] += g.grad_rho.y;
+  sum[20] += g.grad_rho.z;
+}
+template <class Real> IMPACTSPH_GPU_HD inline GradientSums<Real> unflatten_gradient_sums(const Real* sum) {
+  GradientSums<Real> g;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      g.L.m[r][c] = sum[3 * r + c];
+      g.G.m[r][c] = sum[9 + 3 * r + c];
+    }
+  g.grad_rho = Vec3<Real>{sum[18], sum[19], sum[20]};
+  return g;
 }
 
 struct Plane {
@@ -698,6 +713,11 @@ class Solver final : public GpuStepper {
     IMPACTSPH_GPU_HD const PairContact<Real>& pair(std::int32_t a, std::int32_t b) const {
       return contact[a * body_count + b];
     }
+    IMPACTSPH_GPU_HD bool in_penalty_contact(std::int32_t a) const {
+      for (std::int32_t b = 0; b < body_count; ++b)
+        if (pair(a, b).penalty) return true;
+      return false;
+    }
   };
   Work work() {
     return Work{raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
@@ -706,6 +726,16 @@ class Solver final : public GpuStepper {
   }
 
   void evaluate(StateArrays<Real>& state, double dt_in) {
+    if (params_.kernel == KernelKind::WendlandC2) evaluate_with<KernelKind::WendlandC2>(state, dt_in);
+    else evaluate_with<KernelKind::CubicSpline>(state, dt_in);
+  }
+
+  // One evaluation of the rates with the kernel fixed at compile time, so the pair loops carry no select
+  // between kernels. In the pair loops (IMPACTSPH_SIMD_SUMS, launch.hpp) the only values carried from one
+  // neighbour to the next are sums, kept as arrays of Reals; penalty contact, rare and heavy, has a loop of
+  // its own after the SPH pairs (its sums in the same list order as before).
+  template <KernelKind K>
+  void evaluate_with(StateArrays<Real>& state, double dt_in) {
     const std::int64_t n = n_, total = n_ + ghosts_;
     const StateView<Real> y = view(state);
     const Work w = work();
@@ -769,22 +799,26 @@ class Solver final : public GpuStepper {
       const Vec3<Real> vi = w.v[s];
       const Real rhoi = w.rho[s], hi = w.h[s];
       const std::int32_t bi = w.body[s];
-      GradientSums<Real> sums = GradientSums<Real>::zero();
+      Real sum[kGradientSums] = {};
       std::int32_t count = 0;
-      for (std::int64_t k = w.list_offset[i]; k < w.list_offset[i + 1]; ++k) {
+      const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
+      IMPACTSPH_SIMD_SUMS(count, sum[:kGradientSums])
+      for (std::int64_t k = k0; k < k1; ++k) {
         const std::int32_t j = w.list[k];
-        const Vec3p dx = xi - w.x[j];
+        const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
         const Real hij = Real(0.5) * (hi + w.h[j]);
-        if (outside_support(dx, hij)) continue;
-        const Vec3<Real> xij = cast3<Real>(dx);
         const Real r = norm(xij);
-        if (r >= kernel_support(hij)) continue;
-        ++count;
-        if (w.pair(bi, w.body[j]).penalty) continue;  // bodies in penalty contact do not share sums
-        const Vec3<Real> gw = kernel_grad_factor(prm.kernel, r, hij) * xij;
-        add_gradient_pair(sums, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi);
+        if (r < kernel_support(hij)) {
+          ++count;
+          if (!w.pair(bi, w.body[j]).penalty) {  // bodies in penalty contact do not share sums
+            const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
+            GradientSums<Real> one = GradientSums<Real>::zero();
+            add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi);
+            add_flat(sum, one);
+          }
+        }
       }
-      const CorrectedGradients<Real> cg = corrected_gradients(sums, prm.correction);
+      const CorrectedGradients<Real> cg = corrected_gradients(unflatten_gradient_sums(sum), prm.correction);
       w.linv[s] = cg.l_inverse;
       w.grad_rho[s] = cg.grad_rho;
       grad_v[i] = cg.grad_v;
@@ -824,29 +858,44 @@ class Solver final : public GpuStepper {
       const std::int32_t mi = w.mat[s], bi = w.body[s];
       const MaterialParams<Real>& mat_i = mats[mi];
       const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi};
-      Vec3<Real> acc{0, 0, 0}, contact{0, 0, 0};
-      Real de = 0, diffusion = 0, power = 0;
-      for (std::int64_t k = w.list_offset[i]; k < w.list_offset[i + 1]; ++k) {
+      const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
+      Real sum[5] = {};  // acceleration x, y, z; energy rate; delta-SPH diffusion
+      IMPACTSPH_SIMD_SUMS(sum[:5])
+      for (std::int64_t k = k0; k < k1; ++k) {
         const std::int32_t j = w.list[k];
         const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
-        const PairContact<Real>& pc = w.pair(bi, w.body[j]);
-        if (pc.penalty) {
+        const Real hij = Real(0.5) * (hi + w.h[j]);
+        const Real r = norm(xij);
+        if (r < kernel_support(hij) && !w.pair(bi, w.body[j]).penalty) {
+          const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
+          const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j]};
+          Vec3<Real> acc{0, 0, 0};
+          Real de = 0;
+          add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], acc, de);
+          sum[0] += acc.x;
+          sum[1] += acc.y;
+          sum[2] += acc.z;
+          sum[3] += de;
+          if (w.mat[j] == mi) sum[4] += delta_sph_term(w.vol[j], rhoi, w.rho[j], xij, gri, w.grad_rho[j], gw);
+        }
+      }
+      const Vec3<Real> acc{sum[0], sum[1], sum[2]};
+      const Real de = sum[3], diffusion = sum[4];
+      Vec3<Real> contact{0, 0, 0};
+      Real power = 0;
+      if (w.in_penalty_contact(bi)) {
+        for (std::int64_t k = k0; k < k1; ++k) {
+          const std::int32_t j = w.list[k];
+          const PairContact<Real>& pc = w.pair(bi, w.body[j]);
+          if (!pc.penalty) continue;
+          const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
           const Vec3<Real> vij = vi - w.v[j];
           const Vec3<Real> force = penalty_contact_force(
               PenaltyContactParams<Real>{pc.scale}, xij, vij, pc.touch(hi, w.h[j]), mi_mass, w.m[j], hi, w.h[j],
               mat_i.strength.shear_modulus, mats[w.mat[j]].strength.shear_modulus, rhoi, w.rho[j], dt);
           contact += force;
           power += Real(0.5) * penalty_contact_energy_rate(force, vij);
-          continue;
         }
-        const Real hij = Real(0.5) * (hi + w.h[j]);
-        if (outside_support(xi - w.x[j], hij)) continue;
-        const Real r = norm(xij);
-        if (r >= kernel_support(hij)) continue;
-        const Vec3<Real> gw = kernel_grad_factor(prm.kernel, r, hij) * xij;
-        const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j]};
-        add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], acc, de);
-        if (w.mat[j] == mi) diffusion += delta_sph_term(w.vol[j], rhoi, w.rho[j], xij, gri, w.grad_rho[j], gw);
       }
       const Mat3<Real> gv = grad_v[i];
       rS[i] = deviatoric_stress_rate(mat_i, w.S[s], gv);
