@@ -6,7 +6,8 @@
 #   RUNS_ONLY="pam-1.5875 pcm-1.5875" bash cases/ceramic-tile/report.sh   # only these runs
 #   REPORT_ONLY=1 bash cases/ceramic-tile/report.sh   # collect the runs there are, run nothing
 #
-# Environment: BUILD_DIR (default build), RUNS (default runs/ceramic-tile), THREADS (default 1).
+# Environment: BUILD_DIR (default build), RUNS (default runs/ceramic-tile), THREADS (default 1),
+# RUN_CONDITIONS (how the machine was used while the runs ran, quoted in the report with the wall times).
 # A run is skipped when its summary.json exists (delete the folder to run it again).
 #
 # Runs (name: contact treatment, spacing, CSLH, linear viscosity Q2):
@@ -125,9 +126,19 @@ L.append("")
 L.append("X Table 3 (LS-DYNA SPH, CSLH 1.2): PCM 680/700/727/738 m/s and 7.01/7.39/7.51/7.72 g, PAM "
          "676/692/715/728 m/s and 6.65/7.23/7.27/7.58 g at 0.8/0.6/0.4/0.3 mm. X Table 6 (fixed h, Q2 by eq 35): "
          "0.8 -> 0.6 mm at h = 0.96 mm: 676 -> 678 m/s, 6.65 -> 6.72 g.\n")
-L.append("Wall times were measured on a 2-core machine shared with two other engineers' builds and runs "
-         "(load average 5-6 during these runs), so they are upper bounds of what the machine does alone; "
-         "particle-steps per second: " + ", ".join("%s %.3g" % (r["name"], r["pss"]) for r in rows) + ".\n")
+# Spacing study (issue: the residual velocity at the two finest spacings within 2 %), per treatment.
+# The fixed-h series (X section 5) starts at the 1.5875 mm PAM run, whose h (1.905 mm) and Q2 (1.0) it keeps.
+for kind in ("pam", "pcm", "fixh"):
+    same = sorted((r for r in rows if r["kind"] == kind or
+                   (kind == "fixh" and r["kind"] == "pam" and abs(r["h"] - 1.905) < 1e-3)), key=lambda r: r["dx"])
+    if len(same) >= 2:
+        a, b = same[0], same[1]
+        L.append("Spacing study, %s: residual velocity %.1f m/s at %.4f mm against %.1f m/s at %.4f mm, a "
+                 "difference of %+.1f %% (target: under 2 %%).\n" % (label.get(kind, kind), a["v"], a["dx"], b["v"],
+                                                                    b["dx"], 100 * (a["v"] / b["v"] - 1)))
+conditions = os.environ.get("RUN_CONDITIONS", "not recorded (set RUN_CONDITIONS when running report.sh)")
+L.append("Wall times are those of each run as it ran, with the threads of the table; conditions: %s. "
+         "Particle-steps per second: " % conditions + ", ".join("%s %.3g" % (r["name"], r["pss"]) for r in rows) + ".\n")
 L.append("The rod's lattice (round(20.86 mm/dx) layers clipped to the 3.07 mm radius) does not weigh the "
          "nominal 10.60 g; the residual fraction (residual / lattice mass) removes that bias, and "
          "fraction x 10.60 g is the residual mass the discretisation error would not shift.\n")
