@@ -30,7 +30,7 @@
 // code and the row, so a run keeps its bits for a given build and input.
 #define IMPACTSPH_PRAGMA(x) _Pragma(#x)
 #if defined(__CUDACC__)
-#define IMPACTSPH_SIMD_SUMS(...) IMPACTSPH_PRAGMA(omp simd reduction(+ : __VA_ARGS__))
+#define IMPACTSPH_SIMD_SUMS(...)
 #else
 #define IMPACTSPH_SIMD_SUMS(...) IMPACTSPH_PRAGMA(omp simd reduction(+ : __VA_ARGS__))
 #endif
