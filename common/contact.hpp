@@ -58,15 +58,15 @@ IMPACTSPH_HD Vec3<Real> penalty_contact_force(const PenaltyContactParams<Real>& 
   return magnitude * n;
 }
 
-// Power the contact pair takes out of the kinetic energy (W): with the force F on i and -F on k,
-// dKE/dt = F . v_i - F . v_k = F . v_ik, so the rate is -F . v_ik. Positive while the particles approach
-// (energy stored in, or dissipated by, the penalty), negative while the penalty pushes them apart.
 // Distance at which two particles touch (m): SRAD (h_i + h_j)/2 when srad > 0 (X eqs 18, 20), else the
-// fixed contact distance (a number of spacings, m).
+// fixed contact distance (m; a case file gives it in spacings).
 template <class Real> IMPACTSPH_HD Real contact_touch_distance(Real srad, Real fixed_distance, Real h_i, Real h_j) {
   return srad > Real(0) ? srad * Real(0.5) * (h_i + h_j) : fixed_distance;
 }
 
+// Power the contact pair takes out of the kinetic energy (W): with the force F on i and -F on k,
+// dKE/dt = F . v_i - F . v_k = F . v_ik, so the rate is -F . v_ik. Positive while the particles approach
+// (energy stored in, or dissipated by, the penalty), negative while the penalty pushes them apart.
 template <class Real> IMPACTSPH_HD Real penalty_contact_energy_rate(Vec3<Real> force_on_i, Vec3<Real> v_ik) {
   return -dot(force_on_i, v_ik);
 }

@@ -226,3 +226,25 @@ TYPED_TEST(KernelTyped, FirstMomentLatticeSumIsMinusIdentity) {
 }
 
 }  // namespace
+
+namespace {
+
+// The compile-time kernel choice (used by the gpu port's pair loops) gives the same bits as the run-time
+// one for both kernels, at radii inside and beyond the support.
+template <KernelKind K>
+void expect_same_as_runtime_choice() {
+  const double h = 1.3e-3;
+  for (int m = 0; m <= 250; ++m) {
+    const double r = 0.01 * m * h;  // q from 0 to 2.5
+    EXPECT_EQ(kernel_grad_factor_of<K>(r, h), kernel_grad_factor(K, r, h)) << "q = " << r / h;
+    EXPECT_EQ(kernel_grad_factor_of<K>(static_cast<float>(r), static_cast<float>(h)),
+              kernel_grad_factor(K, static_cast<float>(r), static_cast<float>(h)));
+  }
+}
+
+TEST(KernelGradient, CompileTimeChoiceMatchesRunTimeChoice) {
+  expect_same_as_runtime_choice<KernelKind::WendlandC2>();
+  expect_same_as_runtime_choice<KernelKind::CubicSpline>();
+}
+
+}  // namespace
