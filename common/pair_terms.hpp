@@ -21,13 +21,20 @@ struct GradientSums {
   }
 };
 
-// Neighbour j's share of the pass 1 sums: v_ji = v_j - v_i, drho_ji = rho_j - rho_i.
+// Neighbour j's share of the pass 1 sums: v_ji = v_j - v_i, drho_ji = rho_j - rho_i, damage_factor the
+// damaged pair factor 1 - D_ij (damaged_pair_factor, F eq 4.10; 1 for an intact pair). F 4.10 scales the
+// kernel gradient of every interaction, so the velocity and density gradients take it as the momentum
+// and energy rates do: the continuity equation of a failed particle then sees the neighbours it still
+// exchanges forces with, and an intact particle beside a crack does not strain with the fragments
+// flying off it. The correction matrix is built from the unscaled gradient (F's W-hat is the corrected
+// kernel that 4.10 then scales; a scaled L would cancel the scaling in L^-1).
 template <class Real>
 IMPACTSPH_HD void add_gradient_pair(GradientSums<Real>& s, Real vol_j, Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> v_ji,
-                                    Real drho_ji) {
+                                    Real drho_ji, Real damage_factor) {
   accumulate_correction(s.L, vol_j, gw, xij);
-  s.G = s.G + vol_j * outer(v_ji, gw);
-  s.grad_rho += (vol_j * drho_ji) * gw;
+  const Real vf = damage_factor * vol_j;
+  s.G = s.G + vf * outer(v_ji, gw);
+  s.grad_rho += (vf * drho_ji) * gw;
 }
 
 // Pass 1 result: L^-1 (or the identity on fallback), the corrected velocity gradient

@@ -788,7 +788,8 @@ class Solver final : public GpuStepper {
 
     clock_.end(PhaseClock::Gather);
 
-    // Pass 1: correction matrix, velocity and density gradients (common/pair_terms.hpp).
+    // Pass 1: correction matrix, velocity and density gradients, the gradients scaled by the damaged pair
+    // factor as the pass 2 terms are (common/pair_terms.hpp).
     clock_.begin();
     Mat3<Real>* grad_v = raw(grad_v_);
     std::int32_t* fell = raw(fallback_);
@@ -797,7 +798,7 @@ class Solver final : public GpuStepper {
       const std::int64_t s = slot[i];
       const Vec3p xi = w.x[s];
       const Vec3<Real> vi = w.v[s];
-      const Real rhoi = w.rho[s], hi = w.h[s];
+      const Real rhoi = w.rho[s], hi = w.h[s], di = w.damage[s];
       const std::int32_t bi = w.body[s];
       Real sum[kGradientSums] = {};
       std::int32_t count = 0;
@@ -813,7 +814,8 @@ class Solver final : public GpuStepper {
           if (!w.pair(bi, w.body[j]).penalty) {  // bodies in penalty contact do not share sums
             const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
             GradientSums<Real> one = GradientSums<Real>::zero();
-            add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi);
+            add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi,
+                              damaged_pair_factor(di, w.damage[j]));
             add_flat(sum, one);
           }
         }
@@ -876,7 +878,9 @@ class Solver final : public GpuStepper {
           sum[1] += acc.y;
           sum[2] += acc.z;
           sum[3] += de;
-          if (w.mat[j] == mi) sum[4] += delta_sph_term(w.vol[j], rhoi, w.rho[j], xij, gri, w.grad_rho[j], gw);
+          if (w.mat[j] == mi)
+            sum[4] += damaged_pair_factor(side_i.damage, w.damage[j]) *
+                      delta_sph_term(w.vol[j], rhoi, w.rho[j], xij, gri, w.grad_rho[j], gw);
         }
       }
       const Vec3<Real> acc{sum[0], sum[1], sum[2]};

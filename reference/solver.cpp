@@ -136,14 +136,15 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   const std::int64_t* off = neighbours_.offsets.data();
   const std::int32_t* nb = neighbours_.indices.data();
 
-  // Pass 1: correction matrix L_i (F 2.13), velocity gradient, renormalised density gradient (F 2.19).
+  // Pass 1: correction matrix L_i (F 2.13), velocity gradient, renormalised density gradient (F 2.19), the
+  // gradients scaled by the damage factor 1 - D_ij (F 4.10) as the pass 2 terms are.
   std::size_t fallbacks = 0;
   std::int64_t pairs = 0;  // neighbours within the kernel support, for the statistics
 #pragma omp parallel for schedule(static) reduction(+ : fallbacks, pairs)
   for (std::int64_t i = 0; i < ni; ++i) {
     GradientSums<double> sums = GradientSums<double>::zero();
     const Vec3d xi = x_[i], vi = v_[i];
-    const double rhoi = rho_[i], hi = hh_[i];
+    const double rhoi = rho_[i], hi = hh_[i], di = pair_damage_[i];
     const std::int32_t bi = bb_[i];
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int32_t j = nb[k];
@@ -154,7 +155,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       ++pairs;
       if (penalty_between(bi, bb_[j])) continue;  // bodies in penalty contact do not share sums
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi);
+      add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi, damaged_pair_factor(di, pair_damage_[j]));
     }
     const CorrectedGradients<double> cg = corrected_gradients(sums, numerics_.correction);
     if (cg.fell_back) ++fallbacks;
@@ -187,8 +188,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   }
 
   // Pass 2: continuity with delta-SPH (Marrone form), momentum (F 2.11) and energy (consistent F 2.12),
-  // the pair terms scaled by the damage factor 1 - D_ij (F 4.10); penalty contact (F 4.1-4.6) between
-  // bodies that do not share sums.
+  // the pair terms (diffusion included) scaled by the damage factor 1 - D_ij (F 4.10); penalty contact
+  // (F 4.1-4.6) between bodies that do not share sums.
   const ViscosityParams<double> visc = numerics_.viscosity;
   const double delta = numerics_.delta;
 #pragma omp parallel for schedule(static)
@@ -220,7 +221,9 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       if (r >= kernel_support(hij)) continue;
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
       add_momentum_energy_pair(side_i, pair_side(j), visc, gw, xij, vi - v_[j], hij, m_[j], acc, de);
-      if (mat_[j] == mi) diffusion += delta_sph_term(volume_[j], rhoi, rho_[j], xij, gri, grad_rho_[j], gw);
+      if (mat_[j] == mi)
+        diffusion += damaged_pair_factor(side_i.damage, pair_damage_[j]) *
+                     delta_sph_term(volume_[j], rhoi, rho_[j], xij, gri, grad_rho_[j], gw);
     }
     const double c0 = std::sqrt(eos_reference_sound_speed2(materials_[static_cast<std::size_t>(mi)].eos));
     f.drho[i] = continuity_rate(rhoi, grad_v_[i], delta, hi, c0, diffusion);

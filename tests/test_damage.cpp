@@ -1,6 +1,7 @@
 // Unit tests of common/damage.hpp: Johnson-Cook failure strain (F eq 4.7) with the minimum failure strain
 // of X eq 33, the damage increment of each damage model (F eqs 4.8-4.9, X eq 32), the failed-particle
-// rule (no deviatoric stress, no tension) and the damaged pair factor (F eq 4.10).
+// rule (no deviatoric stress, no tension), the damaged pair factor (F eq 4.10) and its use in the pass 1
+// gradient sums.
 //
 // F Table 2 gives no Johnson-Cook failure constants for Weldox 460 E (F uses the critical plastic strain,
 // eps_c = 0.3 target, 0.5 projectile). The failure-strain hand values use the tungsten alloy of X Table 2
@@ -15,6 +16,7 @@
 
 #include "common/damage.hpp"
 #include "common/material.hpp"
+#include "common/pair_terms.hpp"
 
 namespace {
 
@@ -184,6 +186,37 @@ TYPED_TEST(DamageTyped, DamagedPairFactor) {
   EXPECT_EQ(damaged_pair_factor(Real(0.25), Real(0.5)), Real(0.625));
   EXPECT_EQ(damaged_pair_factor(Real(1.5), Real(1.5)), Real(0));
   EXPECT_EQ(damaged_pair_factor(Real(-0.5), Real(-0.5)), Real(1));
+}
+
+// F 4.10 scales the kernel gradient of every interaction: a pair's share of the velocity and density
+// gradient sums scales with 1 - D_ij, its share of the correction matrix does not (so that L^-1 does not
+// undo the scaling). A failed pair (factor 0) adds to L only.
+TYPED_TEST(DamageTyped, GradientPairScalesWithDamageFactor) {
+  using Real = TypeParam;
+  const Real vol = Real(1.25e-9);
+  const Vec3<Real> gw{Real(3.0e5), Real(-1.0e5), Real(2.0e5)}, xij{Real(-1.0e-3), Real(0.5e-3), Real(-0.25e-3)};
+  const Vec3<Real> vji{Real(12), Real(-4), Real(7)};
+  const Real drho = Real(35);
+  GradientSums<Real> intact = GradientSums<Real>::zero(), half = GradientSums<Real>::zero(),
+                     failed = GradientSums<Real>::zero();
+  add_gradient_pair(intact, vol, gw, xij, vji, drho, damaged_pair_factor(Real(0), Real(0)));
+  add_gradient_pair(half, vol, gw, xij, vji, drho, damaged_pair_factor(Real(1), Real(0)));
+  add_gradient_pair(failed, vol, gw, xij, vji, drho, damaged_pair_factor(Real(1), Real(1)));
+  const double tol = rel_tol<Real>();
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      EXPECT_EQ(half.L.m[a][b], intact.L.m[a][b]);
+      EXPECT_EQ(failed.L.m[a][b], intact.L.m[a][b]);
+      EXPECT_NE(intact.G.m[a][b], Real(0));
+      EXPECT_NEAR(half.G.m[a][b], Real(0.5) * intact.G.m[a][b], tol * std::abs(intact.G.m[a][b]));
+      EXPECT_EQ(failed.G.m[a][b], Real(0));
+    }
+    EXPECT_NEAR(half.grad_rho[a], Real(0.5) * intact.grad_rho[a], tol * std::abs(intact.grad_rho[a]));
+    EXPECT_EQ(failed.grad_rho[a], Real(0));
+  }
+  // The intact pair: G = V (v_j - v_i) (x) gw, grad_rho = V (rho_j - rho_i) gw (pair_terms.hpp).
+  EXPECT_NEAR(intact.G.m[0][2], vol * vji.x * gw.z, tol * std::abs(vol * vji.x * gw.z));
+  EXPECT_NEAR(intact.grad_rho.y, vol * drho * gw.y, tol * std::abs(vol * drho * gw.y));
 }
 
 }  // namespace
