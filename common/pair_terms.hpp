@@ -21,8 +21,9 @@ struct GradientSums {
   }
 };
 
-// Neighbour j's share of the pass 1 sums: v_ji = v_j - v_i, drho_ji = rho_j - rho_i, damage_factor the
-// damaged pair factor 1 - D_ij (damaged_pair_factor, F eq 4.10; 1 for an intact pair). F 4.10 scales the
+// Neighbour j's share of the pass 1 sums: v_ji = v_j - v_i, drho_ji = rho_j - rho_i, damage_i and damage_j
+// what the two bring into the damaged pair factor 1 - D_ij (pair_damage, damaged_pair_factor, F eq 4.10;
+// 1 for an intact pair). F 4.10 scales the
 // kernel gradient of every interaction, so the velocity and density gradients take it as the momentum
 // and energy rates do: the continuity equation of a failed particle then sees the neighbours it still
 // exchanges forces with, and an intact particle beside a crack does not strain with the fragments
@@ -30,9 +31,9 @@ struct GradientSums {
 // kernel that 4.10 then scales; a scaled L would cancel the scaling in L^-1).
 template <class Real>
 IMPACTSPH_HD void add_gradient_pair(GradientSums<Real>& s, Real vol_j, Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> v_ji,
-                                    Real drho_ji, Real damage_factor) {
+                                    Real drho_ji, Real damage_i, Real damage_j) {
   accumulate_correction(s.L, vol_j, gw, xij);
-  const Real vf = damage_factor * vol_j;
+  const Real vf = damaged_pair_factor(damage_i, damage_j) * vol_j;
   s.G = s.G + vf * outer(v_ji, gw);
   s.grad_rho += (vf * drho_ji) * gw;
 }
@@ -85,6 +86,15 @@ IMPACTSPH_HD void add_momentum_energy_pair(const PairSide<Real>& i, const PairSi
   const Vec3<Real> tg = T * gt;
   acc += m_j * tg;
   de -= Real(0.5) * m_j * dot(vij, tg);  // (v_j - v_i) . T gt
+}
+
+// Neighbour j's delta-SPH diffusion share (delta_sph_term) scaled by the damaged pair factor 1 - D_ij
+// (F 4.10), as every pair term is; damage_i, damage_j as in add_gradient_pair. Units of delta_sph_term.
+template <class Real>
+IMPACTSPH_HD Real damaged_delta_sph_term(Real damage_i, Real damage_j, Real vol_j, Real rho_i, Real rho_j,
+                                         Vec3<Real> xij, Vec3<Real> grad_rho_i, Vec3<Real> grad_rho_j,
+                                         Vec3<Real> gw) {
+  return damaged_pair_factor(damage_i, damage_j) * delta_sph_term(vol_j, rho_i, rho_j, xij, grad_rho_i, grad_rho_j, gw);
 }
 
 // Continuity with delta-SPH (Marrone form, delta_sph.hpp): drho_i/dt = -rho_i tr(grad v_i) + delta h_i c0 D_i

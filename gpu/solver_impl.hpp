@@ -814,8 +814,7 @@ class Solver final : public GpuStepper {
           if (!w.pair(bi, w.body[j]).penalty) {  // bodies in penalty contact do not share sums
             const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
             GradientSums<Real> one = GradientSums<Real>::zero();
-            add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi,
-                              damaged_pair_factor(di, w.damage[j]));
+            add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi, di, w.damage[j]);
             add_flat(sum, one);
           }
         }
@@ -879,8 +878,8 @@ class Solver final : public GpuStepper {
           sum[2] += acc.z;
           sum[3] += de;
           if (w.mat[j] == mi)
-            sum[4] += damaged_pair_factor(side_i.damage, w.damage[j]) *
-                      delta_sph_term(w.vol[j], rhoi, w.rho[j], xij, gri, w.grad_rho[j], gw);
+            sum[4] += damaged_delta_sph_term(side_i.damage, w.damage[j], w.vol[j], rhoi, w.rho[j], xij, gri,
+                                             w.grad_rho[j], gw);
         }
       }
       const Vec3<Real> acc{sum[0], sum[1], sum[2]};

@@ -155,7 +155,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       ++pairs;
       if (penalty_between(bi, bb_[j])) continue;  // bodies in penalty contact do not share sums
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi, damaged_pair_factor(di, pair_damage_[j]));
+      add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi, di, pair_damage_[j]);
     }
     const CorrectedGradients<double> cg = corrected_gradients(sums, numerics_.correction);
     if (cg.fell_back) ++fallbacks;
@@ -222,8 +222,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
       add_momentum_energy_pair(side_i, pair_side(j), visc, gw, xij, vi - v_[j], hij, m_[j], acc, de);
       if (mat_[j] == mi)
-        diffusion += damaged_pair_factor(side_i.damage, pair_damage_[j]) *
-                     delta_sph_term(volume_[j], rhoi, rho_[j], xij, gri, grad_rho_[j], gw);
+        diffusion += damaged_delta_sph_term(side_i.damage, pair_damage_[j], volume_[j], rhoi, rho_[j], xij, gri,
+                                            grad_rho_[j], gw);
     }
     const double c0 = std::sqrt(eos_reference_sound_speed2(materials_[static_cast<std::size_t>(mi)].eos));
     f.drho[i] = continuity_rate(rhoi, grad_v_[i], delta, hi, c0, diffusion);

@@ -1,7 +1,7 @@
 // Unit tests of common/damage.hpp: Johnson-Cook failure strain (F eq 4.7) with the minimum failure strain
 // of X eq 33, the damage increment of each damage model (F eqs 4.8-4.9, X eq 32), the failed-particle
 // rule (no deviatoric stress, no tension), the damaged pair factor (F eq 4.10) and its use in the pass 1
-// gradient sums.
+// gradient sums and the delta-SPH term.
 //
 // F Table 2 gives no Johnson-Cook failure constants for Weldox 460 E (F uses the critical plastic strain,
 // eps_c = 0.3 target, 0.5 projectile). The failure-strain hand values use the tungsten alloy of X Table 2
@@ -199,9 +199,9 @@ TYPED_TEST(DamageTyped, GradientPairScalesWithDamageFactor) {
   const Real drho = Real(35);
   GradientSums<Real> intact = GradientSums<Real>::zero(), half = GradientSums<Real>::zero(),
                      failed = GradientSums<Real>::zero();
-  add_gradient_pair(intact, vol, gw, xij, vji, drho, damaged_pair_factor(Real(0), Real(0)));
-  add_gradient_pair(half, vol, gw, xij, vji, drho, damaged_pair_factor(Real(1), Real(0)));
-  add_gradient_pair(failed, vol, gw, xij, vji, drho, damaged_pair_factor(Real(1), Real(1)));
+  add_gradient_pair(intact, vol, gw, xij, vji, drho, Real(0), Real(0));
+  add_gradient_pair(half, vol, gw, xij, vji, drho, Real(1), Real(0));
+  add_gradient_pair(failed, vol, gw, xij, vji, drho, Real(1), Real(1));
   const double tol = rel_tol<Real>();
   for (int a = 0; a < 3; ++a) {
     for (int b = 0; b < 3; ++b) {
@@ -217,6 +217,20 @@ TYPED_TEST(DamageTyped, GradientPairScalesWithDamageFactor) {
   // The intact pair: G = V (v_j - v_i) (x) gw, grad_rho = V (rho_j - rho_i) gw (pair_terms.hpp).
   EXPECT_NEAR(intact.G.m[0][2], vol * vji.x * gw.z, tol * std::abs(vol * vji.x * gw.z));
   EXPECT_NEAR(intact.grad_rho.y, vol * drho * gw.y, tol * std::abs(vol * drho * gw.y));
+}
+
+// The delta-SPH share takes the same factor: half for an intact-failed pair, none for a failed pair.
+TYPED_TEST(DamageTyped, DeltaSphPairScalesWithDamageFactor) {
+  using Real = TypeParam;
+  const Vec3<Real> gw{Real(3.0e5), Real(-1.0e5), Real(2.0e5)}, xij{Real(-1.0e-3), Real(0.5e-3), Real(-0.25e-3)};
+  const Vec3<Real> gi{Real(1.0e4), Real(0), Real(-2.0e4)}, gj{Real(0), Real(3.0e4), Real(1.0e4)};
+  const Real vol = Real(1.25e-9), ri = Real(7900), rj = Real(7850);
+  const Real intact = delta_sph_term(vol, ri, rj, xij, gi, gj, gw);
+  ASSERT_NE(intact, Real(0));
+  EXPECT_EQ(damaged_delta_sph_term(Real(0), Real(0), vol, ri, rj, xij, gi, gj, gw), intact);
+  EXPECT_NEAR(damaged_delta_sph_term(Real(0), Real(1), vol, ri, rj, xij, gi, gj, gw), Real(0.5) * intact,
+              rel_tol<Real>() * std::abs(intact));
+  EXPECT_EQ(damaged_delta_sph_term(Real(1), Real(1), vol, ri, rj, xij, gi, gj, gw), Real(0));
 }
 
 }  // namespace
