@@ -23,9 +23,11 @@
 #include <stdexcept>
 #include <thread>
 
-#include "app/scoped_signals.hpp"
 #include "app/gnuplot.hpp"
+#include "app/run_args.hpp"
+#include "app/scoped_signals.hpp"
 #include "common/case_file.hpp"
+#include "common/checkpoint.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
 #include "common/output.hpp"
@@ -72,17 +74,21 @@ double parse_speed(const char* option, const std::string& text) {
 }
 
 // ---------------------------------------------------------------------------------------------------
-// Ctrl-C: the first stops the search after the runs in flight; a second aborts at once.
+// Ctrl-C: the first stops the search after the runs in flight; the second stops those too (each writes
+// its checkpoint, so running the same command again continues them); a third kills the process.
 
-std::atomic<int> g_stop{0};
+std::atomic<int> g_signals{0};
+std::atomic<bool> g_abort_runs{false};
 extern "C" void on_search_stop(int sig) {
-  if (g_stop.exchange(sig) != 0) {
+  const int n = g_signals.fetch_add(1) + 1;
+  if (n == 2) g_abort_runs.store(true);
+  if (n >= 3) {
     std::signal(sig, SIG_DFL);
     std::raise(sig);
   }
 }
 
-bool stop_requested() { return g_stop.load() != 0; }
+bool stop_requested() { return g_signals.load() != 0; }
 
 // ---------------------------------------------------------------------------------------------------
 // Reference figures: CASE_DIR/reference.csv with columns v_impact_m_s,v_residual_m_s,source.
@@ -224,15 +230,20 @@ PlugForm plug_form(const CaseSpec& spec) {
 // ---------------------------------------------------------------------------------------------------
 // Runs
 
+// Where a run's result came from: run here from the start, continued from the checkpoint a stopped
+// search left in its folder, or read from the summary.json of a finished run of the same inputs.
+enum class Origin { Ran, Continued, Reused };
+
 struct Run {
   double v = 0;  // m/s
   fs::path dir;
+  Origin origin = Origin::Ran;
   bool done = false;    // ran to its end (or settled)
   bool failed = false;  // threw; `error` says why
   bool diverged = false;
   std::string error;
   CaseObservables obs;
-  double wall = 0;  // s, scene build and run
+  double wall = 0;  // s, summary.json's wall_time_s (a failed run: its scene build and run)
 };
 
 struct Search {
@@ -246,16 +257,71 @@ struct Search {
   std::mutex print_mutex;
 };
 
+nlohmann::json read_json_file(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) return nullptr;
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
+
+// The observables of a finished reference run with this fingerprint in `dir`, if summary.json holds one.
+// `impactsph run` with the same case file, --spacing and --set values gives the same fingerprint, so a run
+// made by hand counts too.
+bool read_finished_run(const fs::path& dir, const std::string& fingerprint, Run& r) {
+  const nlohmann::json j = read_json_file(dir / "summary.json");
+  if (!j.is_object() || j.value("fingerprint", "") != fingerprint || !j.value("completed", false) ||
+      j.value("solver", "").rfind("reference", 0) != 0 || !j.contains("observables"))
+    return false;
+  try {
+    const nlohmann::json& o = j.at("observables");
+    r.obs.projectile = r.obs.target = true;
+    r.obs.residual_velocity = o.at("residual_velocity").get<double>();
+    r.obs.residual_mass = o.at("residual_mass").get<double>();
+    r.obs.plug_velocity = o.at("plug_velocity").get<double>();
+    r.obs.plug_mass = o.at("plug_mass").get<double>();
+    r.obs.perforated = o.at("perforated").get<bool>();
+    const nlohmann::json& settled = o.at("settled_time");  // null: not settled by time.end
+    r.obs.settled_time = settled.is_null() ? -1.0 : settled.get<double>();
+    r.wall = j.value("wall_time_s", 0.0);
+  } catch (const std::exception&) {
+    return false;  // written by another version: run it again
+  }
+  return true;
+}
+
+// A checkpoint in `dir` that a reference run of these inputs wrote (a manual run says its backend in
+// run.json; the search's own runs are always the reference).
+bool has_checkpoint_of(const fs::path& dir, const std::string& fingerprint) {
+  if (!fs::exists(checkpoint_path(dir))) return false;
+  const nlohmann::json run = read_json_file(dir / "run.json");
+  if (run.is_object() && (run.value("backend", "reference") != "reference" || run.value("precision", "double") != "double"))
+    return false;
+  try {
+    return read_checkpoint(checkpoint_path(dir)).fingerprint == fingerprint;
+  } catch (const std::exception&) {
+    return false;  // damaged or of another format: start afresh
+  }
+}
+
 Run run_one(const Search& s, double v, int threads) {
   Run r;
   r.v = v;
   r.dir = s.out / ("v_" + speed_text(v));
+  std::vector<std::string> sets = s.opt.sets;
+  sets.push_back(s.projectile + ".velocity=" + speed_text(v) + " m/s");
+  const std::string fingerprint = run_fingerprint(s.opt.case_file, s.opt.spacing, sets);
+  if (read_finished_run(r.dir, fingerprint, r)) {
+    r.origin = Origin::Reused;
+    r.done = true;
+    return r;
+  }
   // The OpenMP thread count is a per-thread setting: each concurrent run takes its share of the cores.
   omp_set_num_threads(threads);
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    std::vector<std::string> sets = s.opt.sets;
-    sets.push_back(s.projectile + ".velocity=" + speed_text(v) + " m/s");
     CaseSpec spec = load_case_file(s.opt.case_file, sets, s.opt.spacing);
     Scene scene = build_scene(spec);
     reference::ReferenceSolver solver(scene);
@@ -263,8 +329,11 @@ Run run_one(const Search& s, double v, int threads) {
     ro.out_dir = r.dir;
     ro.quiet = true;
     ro.threads = threads;
-    ro.fingerprint = "ballistic-limit " + sets.back();
+    ro.fingerprint = fingerprint;
+    ro.restart = has_checkpoint_of(r.dir, fingerprint);
+    if (ro.restart) r.origin = Origin::Continued;
     ro.install_signal_handlers = false;  // process-wide; the search handles Ctrl-C (ScopedSignals below)
+    ro.stop = &g_abort_runs;
     // summary.json records the single run this stands for.
     ro.command_line = {"impactsph", "run", s.opt.case_file};
     if (!s.opt.spacing.empty()) ro.command_line.insert(ro.command_line.end(), {"--spacing", s.opt.spacing});
@@ -273,6 +342,8 @@ Run run_one(const Search& s, double v, int threads) {
     const RunResult res = run_simulation(scene, solver, ro);
     r.obs = res.observables;
     r.done = !res.interrupted;
+    r.wall = res.wall_seconds;  // as summary.json records it, with the time of the run it continues
+    return r;
   } catch (const DivergenceError& e) {
     r.failed = r.diverged = true;
     r.error = e.what();
@@ -291,8 +362,13 @@ void print_run(Search& s, const Run& r) {
     const std::string first_line = r.error.substr(0, r.error.find('\n'));
     std::printf("  %9s m/s  %s: %s\n", speed_text(r.v).c_str(), r.diverged ? "diverged" : "failed", first_line.c_str());
   } else {
-    std::printf("  %9s m/s  %-10s  %9.1f m/s  %7.1f s%s\n", speed_text(r.v).c_str(), r.obs.perforated ? "yes" : "no",
-                r.obs.residual_velocity, r.wall, r.obs.settled_time < 0 ? "  (not settled by time.end)" : "");
+    const char* origin = r.origin == Origin::Reused ? "  (finished earlier in this folder)"
+                         : r.origin == Origin::Continued ? "  (continued from its checkpoint)" : "";
+    if (!r.done)
+      std::printf("  %9s m/s  stopped; its checkpoint is in %s\n", speed_text(r.v).c_str(), r.dir.string().c_str());
+    else
+      std::printf("  %9s m/s  %-10s  %9.1f m/s  %7.1f s%s%s\n", speed_text(r.v).c_str(), r.obs.perforated ? "yes" : "no",
+                  r.obs.residual_velocity, r.wall, r.obs.settled_time < 0 ? "  (not settled by time.end)" : "", origin);
   }
   std::fflush(stdout);
 }
@@ -331,7 +407,7 @@ std::vector<Run> run_batch(Search& s, const std::vector<double>& vs) {
         announced = true;
         std::lock_guard<std::mutex> print_lock(s.print_mutex);
         std::fprintf(stderr, "\nstopping: no new runs; waiting for the runs in flight to finish (Ctrl-C again "
-                             "aborts them)\n");
+                             "stops them at their next step with a checkpoint; the same command continues them)\n");
       }
     }
   }
@@ -418,7 +494,8 @@ void write_results(const Search& s, const Outcome& o) {
   }
   nlohmann::json runs = nlohmann::json::array();
   for (const Run& r : s.runs) {
-    nlohmann::json x{{"v_impact_m_s", round_speed(r.v)}, {"dir", r.dir.string()}, {"wall_s", r.wall}};
+    const char* origin = r.origin == Origin::Reused ? "reused" : r.origin == Origin::Continued ? "continued" : "ran";
+    nlohmann::json x{{"v_impact_m_s", round_speed(r.v)}, {"dir", r.dir.string()}, {"wall_s", r.wall}, {"origin", origin}};
     if (r.failed) {
       x["error"] = r.error;
     } else if (!r.done) {
@@ -721,7 +798,8 @@ int ballistic_limit_command(const BallisticOptions& opt) {
     std::fflush(stdout);
   }
 
-  g_stop.store(0);
+  g_signals.store(0);
+  g_abort_runs.store(false);
   const ScopedSignals signals(on_search_stop);
   auto add = [&](std::vector<Run> batch) {
     for (Run& r : batch) s.runs.push_back(std::move(r));

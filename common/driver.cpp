@@ -272,7 +272,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
         while (clock.next_checkpoint <= clock.time + time_eps) clock.next_checkpoint += ts.checkpoint_interval;
         save();
       }
-      if (signals.received()) {
+      if (signals.received() || (opt.stop && opt.stop->load())) {
         result.interrupted = true;
         break;
       }

@@ -1,6 +1,7 @@
 // The run driver shared by both solvers: time loop, observers, writers, checkpoints, progress line and
 // a clean stop on SIGINT/SIGTERM (host only).
 #pragma once
+#include <atomic>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -23,6 +24,9 @@ struct RunOptions {
   // Catch SIGINT/SIGTERM for a clean stop. Handlers are process-wide: callers running several
   // simulations on threads pass false and handle the signals themselves.
   bool install_signal_handlers = true;
+  // Read after every step when set: true stops the run as a signal would (checkpoint, interrupted).
+  // For callers that handle the signals themselves.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 struct RunResult {
