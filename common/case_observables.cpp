@@ -132,30 +132,71 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
   }
 
   if (os.target_index >= 0) {
-    // The plug: target particles that leave with the projectile, i.e. move along the impact direction
-    // faster than half the projectile's residual velocity, linked into clusters by distance (1.5 dx);
-    // the heaviest cluster is the plug. Damage is ignored: a plug can be fully failed and still a plug.
-    // Perforated: the projectile still moves on, a plug left with it, and its nose has passed the rear face
-    // of the plate (the clamped particles mark where the plate is).
+    // The plug: a piece of the target cut out of the plate that leaves with the projectile. The target's
+    // intact particles (damage < 0.99: a failed particle carries no tension, so it holds nothing together)
+    // are linked into pieces by distance (1.5 dx). The plate is the piece, or pieces, holding a clamped
+    // particle (the heaviest piece when nothing is clamped); the plug is the heaviest other piece whose
+    // mass-weighted velocity along the impact direction exceeds half the projectile's residual velocity,
+    // together with the failed particles that travel with it (faster than that, within 1.5 dx of it: the
+    // sheared rim it carries away). So a plate that dishes under the projectile, its centre moving with
+    // it but joined to the clamped rim through intact material, has no plug. Perforated: the projectile still moves on, a plug left
+    // with it, and its nose has passed the rear face of the plate (the clamped particles mark where the
+    // plate is).
     const int body = os.target_index;
     const double v_cut = 0.5 * out.residual_velocity;
     std::vector<std::size_t> members;
     if (out.residual_velocity > os.settle_tolerance)
       for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.body[i] == body && dot(p.vel[i], direction) > v_cut) members.push_back(i);
+        if (p.body[i] == body && p.damage[i] < 0.99) members.push_back(i);
     DisjointSets sets = connect(p, members, 1.5 * dx);
-    std::map<std::size_t, double> mass, momentum;  // ordered by root: ties resolve the same way every run
+    struct Piece {
+      double mass = 0, momentum = 0;
+      bool clamped = false;
+    };
+    std::map<std::size_t, Piece> pieces;  // ordered by root: ties resolve the same way every run
     for (std::size_t k = 0; k < members.size(); ++k) {
-      const std::size_t i = members[k], root = sets.find(k);
-      mass[root] += p.mass[i];
-      momentum[root] += p.mass[i] * dot(p.vel[i], direction);
+      const std::size_t i = members[k];
+      Piece& piece = pieces[sets.find(k)];
+      piece.mass += p.mass[i];
+      piece.momentum += p.mass[i] * dot(p.vel[i], direction);
+      piece.clamped = piece.clamped || p.fixed[i] != 0;
+    }
+    bool any_clamped = false;
+    std::size_t heaviest = 0;
+    double heaviest_mass = -1;
+    for (const auto& [root, piece] : pieces) {
+      any_clamped = any_clamped || piece.clamped;
+      if (piece.mass > heaviest_mass) {
+        heaviest_mass = piece.mass;
+        heaviest = root;
+      }
     }
     double plug_mass = 0, plug_momentum = 0;
-    for (const auto& [root, m] : mass)
-      if (m > plug_mass) {
-        plug_mass = m;
-        plug_momentum = momentum[root];
+    std::size_t plug_root = 0;
+    for (const auto& [root, piece] : pieces) {
+      const bool plate = any_clamped ? piece.clamped : root == heaviest;
+      if (!plate && piece.momentum > v_cut * piece.mass && piece.mass > plug_mass) {
+        plug_mass = piece.mass;
+        plug_momentum = piece.momentum;
+        plug_root = root;
       }
+    }
+    if (plug_mass > 0) {
+      std::vector<std::size_t> carried;  // the plug's particles, then the failed ones moving with it
+      for (std::size_t k = 0; k < members.size(); ++k)
+        if (sets.find(k) == plug_root) carried.push_back(members[k]);
+      const std::size_t plug_count = carried.size();
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.body[i] == body && p.damage[i] >= 0.99 && dot(p.vel[i], direction) > v_cut) carried.push_back(i);
+      DisjointSets with_rim = connect(p, carried, 1.5 * dx);
+      std::vector<char> joins_plug(carried.size(), 0);
+      for (std::size_t k = 0; k < plug_count; ++k) joins_plug[with_rim.find(k)] = 1;
+      for (std::size_t k = plug_count; k < carried.size(); ++k)
+        if (joins_plug[with_rim.find(k)]) {
+          plug_mass += p.mass[carried[k]];
+          plug_momentum += p.mass[carried[k]] * dot(p.vel[carried[k]], direction);
+        }
+    }
     double plate_rear = -std::numeric_limits<double>::max(), projectile_nose = -std::numeric_limits<double>::max();
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (p.body[i] == body && p.fixed[i]) plate_rear = std::max(plate_rear, dot(p.pos[i], direction));

@@ -18,7 +18,7 @@ struct CaseObservables {
   double residual_mass = 0;         // kg, initial mass less the particles with D >= 0.99 (X section 3.1)
   double eroded_mass = 0;           // kg, the projectile particles with D >= 0.99 (initial less residual mass)
   bool target = false;
-  double plug_mass = 0;             // kg, the heaviest cluster of intact target particles that left the plate
+  double plug_mass = 0;             // kg, the heaviest piece of intact target cut off the clamped plate, leaving
   double plug_velocity = 0;         // m/s, its mass-weighted velocity along the impact direction
   double damage_fraction = 0;       // mass fraction of the target with D >= 0.99 (fully damaged)
   bool perforated = false;

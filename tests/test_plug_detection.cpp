@@ -1,0 +1,137 @@
+// The plug and perforation verdict of measure_observables (common/case_observables.cpp) on the 8 mm
+// plate case at 2 mm, with the particles placed and moving as in three hand-made states: a plug cut out
+// and pushed through, the same plug still in its hole, and a plate dishing under the projectile without
+// any failure (the centre moving with the projectile, joined to the clamped rim).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "common/case_file.hpp"
+#include "common/case_observables.hpp"
+#include "common/scene.hpp"
+
+namespace impactsph {
+namespace {
+
+constexpr double kV0 = 150.0;       // m/s, projectile speed along -z in every state
+constexpr double kRimR = 0.010;     // m, projectile radius
+constexpr double kClampR = 0.057;   // m, the plate is clamped outside this radius
+
+Scene plate_scene() {
+  return build_scene(load_case_file(std::string(IMPACTSPH_CASES) + "/plate-8mm/case.toml",
+                                    {"output.vtu=false"}, "2 mm"));
+}
+
+double radius(const Vec3d& x) { return std::hypot(x.x, x.y); }
+
+// The projectile moves on at kV0, its nose `shift` past where it started (the plate's front face).
+void move_projectile(Scene& s, double shift) {
+  ParticleSet& p = s.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.body[i] == s.spec.observables.projectile_index) {
+      p.pos[i].z -= shift;
+      p.vel[i] = {0, 0, -kV0};
+    }
+}
+
+// The plate particles inside the projectile's radius moved by `shift` at kV0, the ring just outside
+// failed and left in place, the rest at rest. The ring is two spacings wide: across one, intact particles
+// of the plug and the plate can still be within the link distance (1.5 dx) of each other.
+void cut_plug(Scene& s, double shift) {
+  ParticleSet& p = s.particles;
+  const double dx = s.spec.numerics.spacing;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.body[i] != s.spec.observables.target_index) continue;
+    const double r = radius(p.pos[i]);
+    p.vel[i] = {0, 0, 0};
+    if (r < kRimR) {
+      p.pos[i].z -= shift;
+      p.vel[i] = {0, 0, -kV0};
+    } else if (r < kRimR + 2 * dx) {
+      p.damage[i] = 1.0;
+    }
+  }
+  move_projectile(s, shift);
+}
+
+double plug_form_mass(const Scene& s) {  // the particles inside the projectile radius, whole body
+  double m = 0;
+  for (std::size_t i = 0; i < s.particles.size(); ++i)
+    if (s.particles.body[i] == s.spec.observables.target_index && radius(s.particles.pos[i]) < kRimR)
+      m += s.particles.mass[i];
+  return symmetry_multiplicity(s.spec, s.spec.observables.target_index) * m;
+}
+
+TEST(PlugDetection, PlugPushedThroughIsFoundAndPerforates) {
+  Scene s = plate_scene();
+  cut_plug(s, 0.012);
+  const CaseObservables o = measure_observables(s, s.particles);
+  EXPECT_TRUE(o.perforated);
+  EXPECT_GT(o.plug_mass, 0.0);
+  EXPECT_NEAR(o.plug_mass, plug_form_mass(s), 1e-12);
+  EXPECT_NEAR(o.plug_velocity, kV0, 1e-9);
+  EXPECT_NEAR(o.residual_velocity, kV0, 1e-9);
+}
+
+TEST(PlugDetection, FailedRimMovingWithThePlugIsPartOfIt) {
+  // Half of the failed ring (the inner half) leaves with the plug; the outer half stays in the hole.
+  Scene s = plate_scene();
+  cut_plug(s, 0.012);
+  ParticleSet& p = s.particles;
+  const double dx = s.spec.numerics.spacing;
+  double rim = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = radius(p.pos[i]);
+    if (p.body[i] == s.spec.observables.target_index && r >= kRimR && r < kRimR + dx) {
+      p.pos[i].z -= 0.012;
+      p.vel[i] = {0, 0, -kV0};
+      rim += p.mass[i];
+    }
+  }
+  ASSERT_GT(rim, 0.0);
+  rim *= symmetry_multiplicity(s.spec, s.spec.observables.target_index);
+  const CaseObservables o = measure_observables(s, s.particles);
+  EXPECT_TRUE(o.perforated);
+  EXPECT_NEAR(o.plug_mass, plug_form_mass(s) + rim, 1e-12);
+  EXPECT_NEAR(o.plug_velocity, kV0, 1e-9);
+}
+
+TEST(PlugDetection, PlugStillInItsHoleIsFoundButDoesNotPerforate) {
+  Scene s = plate_scene();
+  cut_plug(s, 0.0);  // cut by the failed ring but not moved yet: the nose has not passed the rear face
+  const CaseObservables o = measure_observables(s, s.particles);
+  EXPECT_NEAR(o.plug_mass, plug_form_mass(s), 1e-12);
+  EXPECT_FALSE(o.perforated);
+}
+
+TEST(PlugDetection, DishingPlateHasNoPlug) {
+  // No failure: the plate deflects as a cone, w(r) = W (1 - r/R) up to the clamp radius, and moves with
+  // the same profile of speeds; the projectile rides on its centre, its nose well past the rear face of
+  // the clamped rim. Joined to the rim through intact material, the centre is no plug.
+  Scene s = plate_scene();
+  ParticleSet& p = s.particles;
+  const double W = 0.012;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.body[i] != s.spec.observables.target_index) continue;
+    const double f = std::max(0.0, 1.0 - radius(p.pos[i]) / kClampR);
+    p.pos[i].z -= W * f;
+    p.vel[i] = {0, 0, -kV0 * f};
+  }
+  move_projectile(s, W);
+  const CaseObservables o = measure_observables(s, s.particles);
+  EXPECT_NEAR(o.residual_velocity, kV0, 1e-9);
+  EXPECT_EQ(o.plug_mass, 0.0);
+  EXPECT_FALSE(o.perforated);
+}
+
+TEST(PlugDetection, StoppedProjectileHasNoPlug) {
+  Scene s = plate_scene();
+  cut_plug(s, 0.012);
+  for (std::size_t i = 0; i < s.particles.size(); ++i) s.particles.vel[i] = {0, 0, 0};
+  const CaseObservables o = measure_observables(s, s.particles);
+  EXPECT_EQ(o.plug_mass, 0.0);
+  EXPECT_FALSE(o.perforated);
+}
+
+}  // namespace
+}  // namespace impactsph
