@@ -240,4 +240,8 @@ void track_settling(const ObservablesSpec& spec, double time, double v, RunClock
   if (c.settled_time < 0 && time - c.settle_window_start >= spec.settle_window) c.settled_time = c.settle_window_start;
 }
 
+bool impact_is_over(const ObservablesSpec& spec, const CaseObservables& o) {
+  return !o.target || o.perforated || o.residual_velocity <= spec.settle_tolerance;
+}
+
 }  // namespace impactsph

@@ -35,4 +35,10 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p);
 // then stay within the tolerance for the settle window.
 void track_settling(const ObservablesSpec& spec, double time, double residual_velocity, RunClock& clock);
 
+// Whether a run whose residual velocity has settled has nothing more to show (stop_when_settled): the
+// projectile perforated, or stopped or turned back (residual velocity <= the settle tolerance), or there
+// is no target. A projectile that moves on steadily with a plate that has not let it through (the plate
+// still dishing, a plug still being cut) is not done.
+bool impact_is_over(const ObservablesSpec& spec, const CaseObservables& o);
+
 }  // namespace impactsph

@@ -215,6 +215,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
   const double time_eps = 1e-12 * ts.end;
   FallbackCount fallbacks;
 
+  bool impact_over = false;  // settled, and nothing more to come (impact_is_over), at the last row
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
   auto observe = [&](bool force) {
     const bool row = force || clock.time >= clock.next_output - time_eps;
@@ -234,8 +235,11 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
         throw DivergenceError("total energy grew from " + std::to_string(e0) + " J to " + std::to_string(e) +
                               " J at t = " + format_seconds(clock.time) +
                               ": the run is unstable; try a smaller numerics.cfl");
-      if (scene.spec.observables.projectile_index >= 0)
-        track_settling(scene.spec.observables, clock.time, measure_observables(scene, p).residual_velocity, clock);
+      if (scene.spec.observables.projectile_index >= 0) {
+        const CaseObservables o = measure_observables(scene, p);
+        track_settling(scene.spec.observables, clock.time, o.residual_velocity, clock);
+        impact_over = clock.settled_time >= 0 && impact_is_over(scene.spec.observables, o);
+      }
     }
     if (frame) {
       while (clock.next_frame <= clock.time + time_eps) clock.next_frame += frame_interval;
@@ -276,7 +280,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
         result.interrupted = true;
         break;
       }
-      if (scene.spec.observables.stop_when_settled && clock.settled_time >= 0) {
+      if (scene.spec.observables.stop_when_settled && impact_over) {
         result.settled = true;
         break;
       }

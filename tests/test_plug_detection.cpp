@@ -1,13 +1,15 @@
 // The plug and perforation verdict of measure_observables (common/case_observables.cpp) on the 8 mm
-// plate case at 2 mm, with the particles placed and moving as in three hand-made states: a plug cut out
-// and pushed through, the same plug still in its hole, and a plate dishing under the projectile without
-// any failure (the centre moving with the projectile, joined to the clamped rim).
+// plate case at 2 mm, with the particles placed and moving as in hand-made states: a plug cut out and
+// pushed through, the same plug still in its hole, and a plate dishing under the projectile without
+// any failure (the centre moving with the projectile, joined to the clamped rim); and when such a run
+// may stop early (track_settling, impact_is_over).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "common/case_file.hpp"
 #include "common/case_observables.hpp"
+#include "common/run_state.hpp"
 #include "common/scene.hpp"
 
 namespace impactsph {
@@ -131,6 +133,47 @@ TEST(PlugDetection, StoppedProjectileHasNoPlug) {
   const CaseObservables o = measure_observables(s, s.particles);
   EXPECT_EQ(o.plug_mass, 0.0);
   EXPECT_FALSE(o.perforated);
+}
+
+TEST(PlugDetection, DishingPlateIsNotOverPerforationAndReboundAre) {
+  Scene s = plate_scene();
+  const ObservablesSpec& spec = s.spec.observables;
+  CaseObservables dishing;
+  dishing.target = true;
+  dishing.residual_velocity = 12.3;  // steady, riding on the deflecting plate
+  EXPECT_FALSE(impact_is_over(spec, dishing));
+  CaseObservables through = dishing;
+  through.perforated = true;
+  EXPECT_TRUE(impact_is_over(spec, through));
+  CaseObservables rebound = dishing;
+  rebound.residual_velocity = -10.6;
+  EXPECT_TRUE(impact_is_over(spec, rebound));
+  CaseObservables stuck = dishing;
+  stuck.residual_velocity = 0.5 * spec.settle_tolerance;
+  EXPECT_TRUE(impact_is_over(spec, stuck));
+  CaseObservables no_target;
+  no_target.residual_velocity = 12.3;
+  EXPECT_TRUE(impact_is_over(spec, no_target));
+}
+
+TEST(PlugDetection, SettlesAfterTheVelocityLeftItsStartAndHeldForTheWindow) {
+  Scene s = plate_scene();
+  const ObservablesSpec& spec = s.spec.observables;  // window 30 us, tolerance 1 m/s
+  RunClock c;
+  const double us = 1e-6;
+  track_settling(spec, 0, 150.0, c);
+  track_settling(spec, 2 * us, 149.5, c);  // within the tolerance of the start: the impact has not begun
+  EXPECT_LT(c.settle_window_start, 0);
+  track_settling(spec, 4 * us, 120.0, c);  // left it: a window opens
+  EXPECT_DOUBLE_EQ(c.settle_window_start, 4 * us);
+  track_settling(spec, 20 * us, 100.0, c);  // moved on by more than the tolerance: the window restarts
+  EXPECT_DOUBLE_EQ(c.settle_window_start, 20 * us);
+  track_settling(spec, 40 * us, 100.6, c);
+  EXPECT_LT(c.settled_time, 0);  // 20 us held, the window is 30 us
+  track_settling(spec, 50 * us, 99.8, c);
+  EXPECT_DOUBLE_EQ(c.settled_time, 20 * us);
+  track_settling(spec, 52 * us, 98.0, c);  // leaves the band again: not settled any more
+  EXPECT_LT(c.settled_time, 0);
 }
 
 }  // namespace
