@@ -9,10 +9,10 @@ set grid
 set key below left Left reverse noenhanced
 set xrange [0:*]
 $o0 << EOD
-4 172.9227204
-2 223.9977133
-1.6 228.9256179
-1.3333333 233.2329415
+4 173.0526647
+2 234.1699001
+1.6 237.0769246
+1.3333333 239.5650584
 EOD
 plot $o0 u 1:2 w lp pt 7 ps 1.4 lc rgb '#1f77b4' t '8 mm plate at 298 m/s: residual velocity, simulated', \
      232.7248599 w l lw 2 dt 2 lc rgb '#1f77b4' t '8 mm plate at 298 m/s: residual velocity, experiment 232.7'
