@@ -257,21 +257,11 @@ struct Search {
   std::mutex print_mutex;
 };
 
-nlohmann::json read_json_file(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) return nullptr;
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const std::exception&) {
-    return nullptr;
-  }
-}
-
 // The observables of a finished reference run with this fingerprint in `dir`, if summary.json holds one.
 // `impactsph run` with the same case file, --spacing and --set values gives the same fingerprint, so a run
 // made by hand counts too.
 bool read_finished_run(const fs::path& dir, const std::string& fingerprint, Run& r) {
-  const nlohmann::json j = read_json_file(dir / "summary.json");
+  const nlohmann::json j = read_json_or_null(dir / "summary.json");
   if (!j.is_object() || j.value("fingerprint", "") != fingerprint || !j.value("completed", false) ||
       j.value("solver", "").rfind("reference", 0) != 0 || !j.contains("observables"))
     return false;
@@ -296,7 +286,7 @@ bool read_finished_run(const fs::path& dir, const std::string& fingerprint, Run&
 // run.json; the search's own runs are always the reference).
 bool has_checkpoint_of(const fs::path& dir, const std::string& fingerprint) {
   if (!fs::exists(checkpoint_path(dir))) return false;
-  const nlohmann::json run = read_json_file(dir / "run.json");
+  const nlohmann::json run = read_json_or_null(dir / "run.json");
   if (run.is_object() && (run.value("backend", "reference") != "reference" || run.value("precision", "double") != "double"))
     return false;
   try {

@@ -14,6 +14,16 @@ std::string read_text_file(const std::string& path) {
   return s.str();
 }
 
+nlohmann::json read_json_or_null(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) return nullptr;
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
+
 std::string run_fingerprint(const std::string& case_file, const std::string& spacing,
                             const std::vector<std::string>& sets) {
   std::uint64_t h = 1469598103934665603ull;

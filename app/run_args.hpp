@@ -2,12 +2,17 @@
 // run command (checkpoints and summary.json carry the fingerprint) and the sweep (which skips runs whose
 // summary.json holds the fingerprint it would give). Host only.
 #pragma once
+#include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 namespace impactsph {
 
 std::string read_text_file(const std::string& path);  // "" when it cannot be read
+
+// The JSON in `file`, or null when it is missing or not JSON (a run folder written by another version).
+nlohmann::json read_json_or_null(const std::filesystem::path& file);
 
 // FNV-1a 64 of the case file's text, the spacing and every override, as 16 hex digits: a restart must
 // see the same inputs, and a finished run with the same fingerprint need not run again.

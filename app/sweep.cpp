@@ -370,16 +370,6 @@ std::vector<std::string> restart_arguments(const SweepRun& r, const fs::path& di
   return a;
 }
 
-nlohmann::json read_json(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) return nullptr;
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const std::exception&) {
-    return nullptr;
-  }
-}
-
 // What a run folder holds, judged against the run the sweep file asks for.
 enum class RunState { NotRun, Complete, Stopped, Failed, Stale };
 
@@ -395,10 +385,10 @@ struct FolderState {
 // command line summary.json records, since the fingerprint covers the case and overrides only.
 FolderState folder_state(const SweepRun& r, const fs::path& dir) {
   FolderState f;
-  const nlohmann::json record = read_json(dir / "sweep_run.json");
+  const nlohmann::json record = read_json_or_null(dir / "sweep_run.json");
   const bool same_run = record.is_object() && record.value("fingerprint", "") == r.fingerprint &&
                         record.value("backend", "") == r.backend && record.value("precision", "") == r.precision;
-  const nlohmann::json summary = read_json(dir / "summary.json");
+  const nlohmann::json summary = read_json_or_null(dir / "summary.json");
   const bool summary_ours = summary.is_object() && summary.value("fingerprint", "") == r.fingerprint;
   if (summary_ours && summary.value("completed", false) && (same_run || !record.is_object())) {
     f.state = RunState::Complete;
@@ -806,7 +796,7 @@ int sweep_command(const SweepOptions& opt) {
     const fs::path dir = out / r.name;
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - it->start).count();
     running.erase(it);
-    const nlohmann::json record = read_json(dir / "sweep_run.json");
+    const nlohmann::json record = read_json_or_null(dir / "sweep_run.json");
     const std::vector<std::string> args = record.value("arguments", std::vector<std::string>{});
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     const FolderState f = folder_state(r, dir);
