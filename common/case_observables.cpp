@@ -139,9 +139,9 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
     // mass-weighted velocity along the impact direction exceeds half the projectile's residual velocity,
     // together with the failed particles that travel with it (faster than that, within 1.5 dx of it: the
     // sheared rim it carries away). So a plate that dishes under the projectile, its centre moving with
-    // it but joined to the clamped rim through intact material, has no plug. Perforated: the projectile still moves on, a plug left
-    // with it, and its nose has passed the rear face of the plate (the clamped particles mark where the
-    // plate is).
+    // it but joined to the clamped rim through intact material, has no plug. Perforated: the projectile
+    // still moves on, a plug left with it, and its nose has passed the rear face of the plate (the
+    // clamped particles mark where the plate is).
     const int body = os.target_index;
     const double v_cut = 0.5 * out.residual_velocity;
     std::vector<std::size_t> members;
