@@ -23,9 +23,8 @@ struct GradientSums {
 
 // Neighbour j's share of the pass 1 sums: v_ji = v_j - v_i, drho_ji = rho_j - rho_i, damage_i and damage_j
 // what the two bring into the damaged pair factor 1 - D_ij (pair_damage, damaged_pair_factor, F eq 4.10;
-// 1 for an intact pair). F 4.10 scales the
-// kernel gradient of every interaction, so the velocity and density gradients take it as the momentum
-// and energy rates do: the continuity equation of a failed particle then sees the neighbours it still
+// 1 for an intact pair). F 4.10 scales the kernel gradient of every interaction, so the velocity and
+// density gradients take it as the momentum and energy rates do: the continuity equation of a failed particle then sees the neighbours it still
 // exchanges forces with, and an intact particle beside a crack does not strain with the fragments
 // flying off it. The correction matrix is built from the unscaled gradient (F's W-hat is the corrected
 // kernel that 4.10 then scales; a scaled L would cancel the scaling in L^-1).
