@@ -35,6 +35,20 @@ IMPACTSPH_HD void reflect_at_plane(Vec3<Pos>& x, Vec3<Real>& v, int axis, Pos po
   }
 }
 
+// One reflection of a symmetry-plane image (the mirror particles of both solvers): the image
+// x' = sign x + shift (per axis) of the point x is reflected through the plane x_axis = position when it
+// lies within `margin` of that plane (m): sign_a -> -sign_a, shift_a -> 2 position - shift_a. Returns
+// whether it was; sign and shift are left as they were when it was not.
+template <class Pos>
+IMPACTSPH_HD bool mirror_through_plane(Vec3<Pos>& sign, Vec3<Pos>& shift, Vec3<Pos> x, int axis, Pos position,
+                                       Pos margin) {
+  const Pos d = sign[axis] * x[axis] + shift[axis] - position;
+  if ((d < Pos(0) ? -d : d) >= margin) return false;
+  sign[axis] = -sign[axis];
+  shift[axis] = Pos(2) * position - shift[axis];
+  return true;
+}
+
 // Explicit density update rho = rho0 + dt drho/dt with the floor min_density_ratio rho0 (a solid torn apart does not rarefy below it; the explicit
 // continuity update can overshoot for a lone pair of separating fragments). kg/m^3, dt in s.
 template <class Real>

@@ -181,15 +181,9 @@ IMPACTSPH_GPU_HD inline bool mirror_image(const Plane* planes, int plane_count, 
                                           Vec3p& sign, Vec3p& shift) {
   sign = Vec3p{1, 1, 1};
   shift = Vec3p{0, 0, 0};
-  for (int k = 0; k < plane_count; ++k) {
-    if (!(mask & (1 << k))) continue;
-    const int a = planes[k].axis;
-    const double xa = sign[a] * x[a] + shift[a];
-    const double d = xa - planes[k].position;
-    if ((d < 0 ? -d : d) >= margin) return false;
-    sign[a] = -sign[a];
-    shift[a] = 2 * planes[k].position - shift[a];
-  }
+  for (int k = 0; k < plane_count; ++k)
+    if ((mask & (1 << k)) && !mirror_through_plane(sign, shift, x, planes[k].axis, planes[k].position, margin))
+      return false;
   return true;
 }
 

@@ -78,16 +78,12 @@ void ReferenceSolver::find_ghosts(const std::vector<Vec3d>& pos, double margin) 
   ghosts_.clear();
   const std::size_t n = pos.size();
   for (const SymmetryPlaneSpec& plane : symmetry_) {
-    const int a = plane.axis;
     const std::size_t existing = ghosts_.size();
     for (std::size_t k = 0; k < n + existing; ++k) {
       Ghost g = k < n ? Ghost{static_cast<std::int32_t>(k), Vec3d{1, 1, 1}, Vec3d{0, 0, 0}} : ghosts_[k - n];
-      const double xa = g.sign[a] * pos[static_cast<std::size_t>(g.source)][a] + g.shift[a];
-      if (std::abs(xa - plane.position) >= margin) continue;
-      // Reflect x'_a = 2 c - x_a applied after x_a = s x0_a + t.
-      g.sign[a] = -g.sign[a];
-      g.shift[a] = 2 * plane.position - g.shift[a];
-      ghosts_.push_back(g);
+      if (mirror_through_plane(g.sign, g.shift, pos[static_cast<std::size_t>(g.source)], plane.axis, plane.position,
+                               margin))
+        ghosts_.push_back(g);
     }
   }
 }
