@@ -44,6 +44,20 @@ const char* shape_name(const BodySpec& b) {
   return b.shape == Shape::Box ? "box" : (b.shape == Shape::Sphere ? "sphere" : "cylinder");
 }
 
+// The warnings of the scene builder about bodies whose generated geometry departs from the case's.
+// A relative difference in per cent, rounding noise shown as zero.
+double percent_difference(double generated, double specified) {
+  const double d = generated / specified - 1;
+  return std::abs(d) < 5e-10 ? 0.0 : 100 * d;
+}
+
+void print_geometry_warnings(const Scene& scene, std::FILE* to) {
+  for (std::size_t k = 0; k < scene.bodies.size(); ++k)
+    for (const std::string& w : scene.bodies[k].warnings)
+      std::fprintf(to, "warning: %s: bodies[%zu] (\"%s\"): %s\n", scene.spec.source_file.c_str(), k,
+                   scene.bodies[k].name.c_str(), w.c_str());
+}
+
 void print_scene(const Scene& scene, double dt) {
   const CaseSpec& s = scene.spec;
   std::printf("case      %s (%s)\n", s.name.c_str(), s.source_file.c_str());
@@ -61,6 +75,20 @@ void print_scene(const Scene& scene, double dt) {
                 shape_name(s.bodies[k]), b.particle_count, b.initial_mass * 1e3, fixed);
   }
   std::printf("%-16s %-16s %-9s %10zu\n", "total", "", "", scene.particles.size());
+  std::printf("\nbodies as specified and as generated (whole bodies; each lattice is fitted to its shape)\n");
+  std::printf("%-16s %-10s %14s %14s %11s\n", "body", "", "specified", "generated", "difference");
+  for (const BodyInfo& b : scene.bodies) {
+    std::printf("%-16s %-10s %12.6g g %12.6g g %+10.3f %%\n", b.name.c_str(), "mass", b.specified_mass * 1e3,
+                b.generated_mass * 1e3, percent_difference(b.generated_mass, b.specified_mass));
+    for (const BodySize& size : b.sizes)
+      std::printf("%-16s %-10s %11.6g mm %11.6g mm %+10.3f %%\n", "", size.name.c_str(), size.specified * 1e3,
+                  size.generated * 1e3, percent_difference(size.generated, size.specified));
+    std::printf("%-16s %-10s %.6g x %.6g x %.6g mm cells (x, y, z), stretched by at most %.2f %%", "", "lattice",
+                b.lattice_spacing.x * 1e3, b.lattice_spacing.y * 1e3, b.lattice_spacing.z * 1e3, 100 * b.max_stretch);
+    if (std::abs(b.mass_scale - 1) > 1e-9) std::printf(", masses scaled by %.6g", b.mass_scale);
+    std::printf("\n");
+  }
+  print_geometry_warnings(scene, stdout);
   for (const SymmetryPlaneSpec& p : s.symmetry)
     std::printf("symmetry  plane %c = %.6g mm\n", "xyz"[p.axis], p.position * 1e3);
   const double steps = dt > 0 ? s.time.end / dt : 0;
@@ -115,6 +143,7 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   threads = omp_get_max_threads();
 
   Scene scene = load_scene(args);
+  print_geometry_warnings(scene, stderr);
   if (out.empty()) out = (fs::path("runs") / scene.spec.name).string();
   RunOptions opt;
   opt.out_dir = out;

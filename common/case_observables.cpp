@@ -59,29 +59,6 @@ DisjointSets connect(const ParticleSet& p, const std::vector<std::size_t>& membe
 
 }  // namespace
 
-int symmetry_multiplicity(const CaseSpec& spec, int body) {
-  const BodySpec& b = spec.bodies[static_cast<std::size_t>(body)];
-  int m = 1;
-  for (const SymmetryPlaneSpec& plane : spec.symmetry) {
-    double lo, hi;
-    if (b.shape == Shape::Box) {
-      lo = b.box_min[plane.axis];
-      hi = b.box_max[plane.axis];
-    } else if (b.shape == Shape::Sphere) {
-      lo = b.center[plane.axis] - b.radius;
-      hi = b.center[plane.axis] + b.radius;
-    } else if (plane.axis == b.axis) {
-      lo = std::min(b.base[plane.axis], b.base[plane.axis] + b.length);
-      hi = std::max(b.base[plane.axis], b.base[plane.axis] + b.length);
-    } else {
-      lo = b.base[plane.axis] - b.radius;
-      hi = b.base[plane.axis] + b.radius;
-    }
-    if (plane.position > lo && plane.position < hi) m *= 2;
-  }
-  return m;
-}
-
 CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
   const CaseSpec& spec = scene.spec;
   const ObservablesSpec& os = spec.observables;
@@ -96,22 +73,25 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
     double wall = 0;
     for (const SymmetryPlaneSpec& plane : spec.symmetry)
       if (plane.axis == axis) wall = plane.position;
+    // The bar's lattice: layers dz apart along its axis, cross-section spacing ds (scene.cpp).
+    const Vec3d& cell = scene.bodies[static_cast<std::size_t>(body)].lattice_spacing;
+    const double dz = cell[axis], ds = cell[(axis + 1) % 3];
     double far = 0, r_face = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (p.body[i] != body) continue;
       const double along = std::abs(p.pos[i][axis] - wall);
       far = std::max(far, along);
-      if (along < dx) {
+      if (along < dz) {
         double r2 = 0;
         for (int a = 0; a < 3; ++a)
           if (a != axis) r2 += sqr(p.pos[i][a] - b.base[a]);
         r_face = std::max(r_face, std::sqrt(r2));
       }
     }
-    // A particle stands for a cube of side dx: the body extends dx/2 past the outermost centres.
+    // A particle stands for its cell: the body extends half a cell past the outermost centres.
     out.taylor_bar = true;
-    out.final_length = far + 0.5 * dx;
-    out.impact_face_diameter = 2 * (r_face + 0.5 * dx);
+    out.final_length = far + 0.5 * dz;
+    out.impact_face_diameter = 2 * (r_face + 0.5 * ds);
   }
 
   Vec3d direction{0, 0, 0};

@@ -25,9 +25,6 @@ struct CaseObservables {
   double settled_time = -1;         // s, since when the residual velocity has been steady; -1: not yet
 };
 
-// How many copies of a body's model make the whole body: 2 for each symmetry plane that cuts its shape.
-int symmetry_multiplicity(const CaseSpec& spec, int body);
-
 CaseObservables measure_observables(const Scene& scene, const ParticleSet& p);
 
 // Tracks whether the residual velocity has settled (state kept in RunClock so a restart continues it):

@@ -113,9 +113,21 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
   nlohmann::json bodies = nlohmann::json::array();
   for (std::size_t k = 0; k < r.bodies.size(); ++k) {
     const BodySummary& b = r.bodies[k];
-    bodies.push_back({{"name", scene.bodies[k].name},
+    const BodyInfo& info = scene.bodies[k];
+    nlohmann::json specified{{"mass_kg", info.specified_mass}}, generated{{"mass_kg", info.generated_mass}};
+    for (const BodySize& size : info.sizes) {
+      specified[size.name + "_m"] = size.specified;
+      generated[size.name + "_m"] = size.generated;
+    }
+    generated["lattice_spacing_m"] = vec_json(info.lattice_spacing);
+    generated["max_stretch"] = info.max_stretch;
+    generated["mass_scale"] = info.mass_scale;
+    bodies.push_back({{"name", info.name},
                       {"particles", b.particles},
-                      {"initial_mass_kg", scene.bodies[k].initial_mass},
+                      {"specified", specified},
+                      {"generated", generated},
+                      {"geometry_warnings", info.warnings},
+                      {"initial_mass_kg", info.initial_mass},
                       {"mass_kg", b.mass},
                       {"velocity_m_s", vec_json(b.velocity)},
                       {"speed_m_s", norm(b.velocity)},

@@ -1,23 +1,31 @@
-// Scene builder: fills each body of a CaseSpec with particles on a regular cubic lattice of spacing dx,
-// clips bodies that reach across a symmetry plane to the model side of it (quarter and half models),
-// then checks the geometry (overlaps, symmetry planes, fixed regions, contact pairs) and throws CaseError
-// naming the body or boundary, with the line of its table in the case file, when it is impossible. Particles are stored body by body in file order, each body in
-// lattice order (the first cross-section axis fastest, the third slowest), so the same case always gives
-// the same particle numbering (design.md, "Deterministic").
+// Scene builder: fills each body of a CaseSpec with particles on a lattice fitted to its shape at about the
+// case's spacing dx, clips bodies that reach across a symmetry plane to the model side of it (quarter and
+// half models), then checks the geometry (overlaps, symmetry planes, fixed regions, contact pairs) and
+// throws CaseError naming the body or boundary, with the line of its table in the case file, when it is
+// impossible. Particles are stored body by body in file order, each body in lattice order (the first
+// cross-section axis fastest, the third slowest), so the same case always gives the same particle
+// numbering (design.md, "Deterministic").
 //
-// Lattices:
-//   box:      points min + (i + 1/2) dx per axis, i < floor(extent/dx); an extent that is not a multiple
-//             of dx leaves a gap of equal width at both faces (the lattice is centred in the box).
-//   cylinder: layers at base + (k + 1/2) dx along the axis, k < round(length/dx); in each layer a square
-//             lattice at offsets (i + 1/2) dx from the axis, kept where the distance to the axis is at
-//             most the radius.
-//   sphere:   a cubic lattice at offsets (i + 1/2) dx from the centre on every axis, kept where the
-//             distance to the centre is at most the radius (x fastest, then y, then z).
-// Every particle centre lies inside its shape.
-// Each particle carries the mass rho0 dx^3 of its lattice cell (so a box that is a whole number of cells
-// has exactly the mass rho0 V), density rho0, zero energy, stress and damage, and h = h_factor dx.
+// A body is the shape the case gives, whatever dx: the cells of its lattice add up to the shape's volume
+// and its particles carry the mass rho0 x cell volume, so the body has its mass rho0 V and its sizes.
+//   box:      along each axis, n = round(extent/dx) layers of cells of width extent/n, the outermost
+//             cells ending on the faces (a stretch of at most dx/2 over the extent, per axis);
+//   cylinder: the same along the axis; in each layer a square lattice at offsets (i + 1/2) s from the
+//             axis, kept where the distance to the axis is at most the radius, with s the spacing within
+//             10 % of dx nearest to it at which the N kept points hold exactly the circle: N s^2 = pi r^2
+//             (fit_round_spacing);
+//   sphere:   a cubic lattice at offsets (i + 1/2) s from the centre, kept within the radius, N s^3 =
+//             (4/3) pi r^3 in the same way.
+// A symmetry plane strictly inside a box or a cylinder's length splits that axis into two pieces filled
+// separately, so its layers lie half a cell from the plane. Stretching the lattice rather than scaling the
+// masses keeps each particle's volume m/rho0 the cell it stands for, so the kernel sums over neighbours
+// (sum_j m_j/rho_j W_ij = 1 inside a body) stay those of the lattice. Only where no round-lattice spacing
+// within 10 % fits (a body a few spacings across) is dx kept and the masses scaled to rho0 V, with a
+// warning. Every particle centre lies inside its shape; density rho0, zero energy, stress and damage,
+// and h = h_factor dx.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -98,49 +106,152 @@ bool strictly_inside(const BodySpec& b, const Vec3d& p, double eps) {
   return rin > 0 && r2 < rin * rin;
 }
 
-// Lattice points of one body; throws when the body is thinner than two particles.
-std::vector<Vec3d> lattice(const CaseSpec& spec, std::size_t k, double dx) {
+// Where the symmetry planes on `axis` cut the interval (lo, hi) strictly inside it.
+std::vector<double> cuts_inside(const CaseSpec& spec, int axis, double lo, double hi, double dx) {
+  std::vector<double> cuts;
+  const double eps = 1e-9 * dx;
+  for (const SymmetryPlaneSpec& plane : spec.symmetry)
+    if (plane.axis == axis && plane.position > lo + eps && plane.position < hi - eps) cuts.push_back(plane.position);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  return cuts;
+}
+
+// Cells of one lattice axis that fill [lo, hi] exactly: the interval is cut at the symmetry planes strictly
+// inside it, and each piece of length L holds n = max(1, round(L / dx)) cells of width L / n, so that the
+// outermost cells end on the body's faces and the layers next to a plane lie half a cell from it.
+struct AxisCells {
+  std::vector<double> centre, width;
+};
+
+AxisCells fill_axis(double lo, double hi, const std::vector<double>& cuts, double dx) {
+  std::vector<double> ends{lo};
+  ends.insert(ends.end(), cuts.begin(), cuts.end());
+  ends.push_back(hi);
+  AxisCells out;
+  for (std::size_t piece = 0; piece + 1 < ends.size(); ++piece) {
+    const double a = ends[piece], length = ends[piece + 1] - a;
+    // A piece of exactly n + 1/2 spacings up to rounding takes the finer lattice, n + 1 cells.
+    const long long n = std::max(1LL, static_cast<long long>(std::floor(length / dx + 0.5 + 1e-9)));
+    const double w = length / double(n);
+    for (long long i = 0; i < n; ++i) {
+      out.centre.push_back(a + (double(i) + 0.5) * w);
+      out.width.push_back(w);
+    }
+  }
+  return out;
+}
+
+// The round lattices: points at offsets (i + 1/2) s from the centre on each of `dim` axes (dim 2: a disk,
+// the cross-section of a cylinder; dim 3: a ball), kept where the distance to the centre is at most R.
+// The test is made in units of s, the same in the count and in the generation, with a relative tolerance
+// that keeps points exactly on the circle.
+bool in_round(double q, long long i, long long j, long long k, int dim) {
+  const double r2 = sqr(double(i) + 0.5) + sqr(double(j) + 0.5) + (dim == 3 ? sqr(double(k) + 0.5) : 0.0);
+  return r2 <= q;
+}
+
+double round_q(double radius, double s) { return sqr(radius / s) * (1 + 1e-12); }
+
+// The index of the point (i + 1/2) s folded into the positive octant: i < 0 stands at -(|i| - 1/2) s.
+long long fold(long long i) { return i < 0 ? -i - 1 : i; }
+
+// Points of the round lattice of spacing s (a multiple of 4 for a disk, of 8 for a ball, by symmetry).
+long long round_count(double radius, double s, int dim) {
+  const double q = round_q(radius, s);
+  long long n = 0;
+  for (long long i = 0; sqr(double(i) + 0.5) <= q; ++i) {
+    if (dim == 2) {
+      n += static_cast<long long>(std::floor(std::sqrt(q - sqr(double(i) + 0.5)) + 0.5));
+      continue;
+    }
+    for (long long j = 0; sqr(double(i) + 0.5) + sqr(double(j) + 0.5) <= q; ++j)
+      n += static_cast<long long>(std::floor(std::sqrt(q - sqr(double(i) + 0.5) - sqr(double(j) + 0.5)) + 0.5));
+  }
+  return dim == 2 ? 4 * n : 8 * n;
+}
+
+// The spacing s nearest dx at which the round lattice holds exactly the shape's area (disk) or volume
+// (ball), N(s) s^dim = V, so that each particle's cell s^dim (times the layer thickness of a cylinder)
+// is its share of the body and the kernel sums over neighbours, sum_j (m_j / rho_j) W_ij, stay those of
+// the lattice. N(s) is a step function of s: s_N = (V / N)^(1/dim) solves it when the lattice at s_N holds
+// N points. The candidates N are tried in order of |ln(s_N / dx)| within +-10 %; 0 when none fits (a body
+// only a few spacings across), and the caller keeps dx and scales the masses.
+double fit_round_spacing(double radius, double dx, int dim) {
+  const double volume = dim == 2 ? Constants<double>::pi * sqr(radius)
+                                 : 4.0 / 3.0 * Constants<double>::pi * radius * radius * radius;
+  const long long step = dim == 2 ? 4 : 8;
+  const double n_dx = volume / std::pow(dx, dim);
+  const double widest = 1.1;
+  const long long lo = std::max(step, static_cast<long long>(std::floor(n_dx / std::pow(widest, dim) / double(step))) * step);
+  const long long hi = static_cast<long long>(std::ceil(n_dx * std::pow(widest, dim) / double(step))) * step;
+  std::vector<long long> candidates;
+  for (long long n = lo; n <= hi; n += step) candidates.push_back(n);
+  std::stable_sort(candidates.begin(), candidates.end(), [&](long long a, long long b) {
+    return std::abs(std::log(double(a) / n_dx)) < std::abs(std::log(double(b) / n_dx));
+  });
+  for (const long long n : candidates) {
+    const double s = std::pow(volume / double(n), 1.0 / dim);
+    if (std::abs(std::log(s / dx)) > std::log(widest)) continue;
+    if (round_count(radius, s, dim) == n) return s;
+  }
+  return 0;
+}
+
+// The particles of one body before clipping, each with its cell (widths along x, y, z), and how the
+// lattice was fitted.
+struct BodyLattice {
+  std::vector<Vec3d> pts;
+  std::vector<Vec3d> cell;  // m, widths of each particle's lattice cell along x, y, z
+  bool round_fitted = true; // false: no round-lattice spacing within 10 % of dx fits; dx kept
+};
+
+// Lattice points of one body; throws when the body is thinner than two particles. Boxes and the axis of
+// a cylinder use fill_axis, the cross-section of a cylinder and a sphere the fitted round lattice, so
+// that the cells add up to the shape's volume.
+BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx) {
   const BodySpec& b = spec.bodies[k];
   const std::string key = body_key(k);
   const std::string thin_hint = " at spacing " + format_quantity(dx, Dimension::Length) +
                                 ": a body needs at least two particles across; make it at least " +
                                 format_quantity(2 * dx, Dimension::Length) + " or refine numerics.spacing";
-  std::vector<Vec3d> pts;
+  BodyLattice out;
   if (b.shape == Shape::Box) {
-    long long n[3];
-    double start[3];
+    AxisCells axes[3];
+    double count = 1;
     for (int a = 0; a < 3; ++a) {
       const double extent = b.box_max[a] - b.box_min[a];
       if (!(extent > 0))
         throw CaseError(spec.source_file, b.line, key, "max." + std::string(1, axis_name(a)) + " must be greater than min");
-      // 1e-9: an extent that is a whole number of cells up to rounding keeps its last layer.
-      const double cells = std::floor(extent / dx + 1e-9);
-      if (cells < 2)
+      // 1e-9: an extent of exactly two spacings up to rounding is accepted.
+      if (extent < 2 * dx * (1 - 1e-9))
         throw CaseError(spec.source_file, b.line, key,
                         body_name(spec, k) + " is " + format_quantity(extent, Dimension::Length) + " thick along " +
                             axis_name(a) + thin_hint);
-      if (cells > kMaxParticles)
+      if (extent / dx > kMaxParticles)
         throw CaseError(spec.source_file, b.line, key, "too many particles at this spacing; use a coarser numerics.spacing");
-      n[a] = static_cast<long long>(cells);
-      start[a] = b.box_min[a] + 0.5 * (extent - cells * dx) + 0.5 * dx;
+      count *= std::round(extent / dx);
     }
-    const double count = double(n[0]) * double(n[1]) * double(n[2]);
     if (count > kMaxParticles)
       throw CaseError(spec.source_file, b.line, key,
-                      body_name(spec, k) + " would hold " + format_quantity(count, Dimension::Dimensionless) +
+                      body_name(spec, k) + " would hold about " + format_quantity(count, Dimension::Dimensionless) +
                           " particles at spacing " + format_quantity(dx, Dimension::Length) +
                           " (at most 1e9); use a coarser numerics.spacing");
-    pts.reserve(static_cast<std::size_t>(count));
-    for (long long iz = 0; iz < n[2]; ++iz)
-      for (long long iy = 0; iy < n[1]; ++iy)
-        for (long long ix = 0; ix < n[0]; ++ix)
-          pts.push_back({start[0] + double(ix) * dx, start[1] + double(iy) * dx, start[2] + double(iz) * dx});
-    return pts;
+    for (int a = 0; a < 3; ++a)
+      axes[a] = fill_axis(b.box_min[a], b.box_max[a], cuts_inside(spec, a, b.box_min[a], b.box_max[a], dx), dx);
+    out.pts.reserve(axes[0].centre.size() * axes[1].centre.size() * axes[2].centre.size());
+    for (std::size_t iz = 0; iz < axes[2].centre.size(); ++iz)
+      for (std::size_t iy = 0; iy < axes[1].centre.size(); ++iy)
+        for (std::size_t ix = 0; ix < axes[0].centre.size(); ++ix) {
+          out.pts.push_back({axes[0].centre[ix], axes[1].centre[iy], axes[2].centre[iz]});
+          out.cell.push_back({axes[0].width[ix], axes[1].width[iy], axes[2].width[iz]});
+        }
+    return out;
   }
 
   if (b.shape == Shape::Sphere) {
     // 1e-9: a diameter of exactly two cells up to rounding is accepted (it holds the 8 points at
-    // (+-1/2, +-1/2, +-1/2) dx).
+    // (+-1/2, +-1/2, +-1/2) s).
     if (b.radius < dx * (1 - 1e-9))
       throw CaseError(spec.source_file, b.line, key,
                       body_name(spec, k) + " has a diameter of " + format_quantity(2 * b.radius, Dimension::Length) +
@@ -151,19 +262,23 @@ std::vector<Vec3d> lattice(const CaseSpec& spec, std::size_t k, double dx) {
                       body_name(spec, k) + " would hold about " + format_quantity(estimate, Dimension::Dimensionless) +
                           " particles at spacing " + format_quantity(dx, Dimension::Length) +
                           " (at most 1e9); use a coarser numerics.spacing");
-    // Offsets (i + 1/2) dx from the centre on every axis, as the cross-section of a cylinder: a plane
+    double s = fit_round_spacing(b.radius, dx, 3);
+    out.round_fitted = s > 0;
+    if (!out.round_fitted) s = dx;
+    // Offsets (i + 1/2) s from the centre on every axis, as the cross-section of a cylinder: a plane
     // through the centre lies halfway between two lattice layers, so two or three planes through it
-    // cut an exact quarter or eighth. The same relative tolerance keeps points exactly on the sphere.
-    const long long mi = static_cast<long long>(std::ceil(b.radius / dx));
-    const double r2 = sqr(b.radius) * (1 + 1e-12);
-    pts.reserve(static_cast<std::size_t>(estimate * 1.1) + 8);
+    // cut an exact quarter or eighth.
+    const double q = round_q(b.radius, s);
+    const long long mi = static_cast<long long>(std::ceil(b.radius / s)) + 1;
+    out.pts.reserve(static_cast<std::size_t>(estimate * 1.3) + 8);
     for (long long kz = -mi; kz < mi; ++kz)
       for (long long jy = -mi; jy < mi; ++jy)
         for (long long ix = -mi; ix < mi; ++ix) {
-          const Vec3d o{(double(ix) + 0.5) * dx, (double(jy) + 0.5) * dx, (double(kz) + 0.5) * dx};
-          if (norm2(o) <= r2) pts.push_back(b.center + o);
+          if (!in_round(q, fold(ix), fold(jy), fold(kz), 3)) continue;
+          out.pts.push_back(b.center + Vec3d{(double(ix) + 0.5) * s, (double(jy) + 0.5) * s, (double(kz) + 0.5) * s});
+          out.cell.push_back({s, s, s});
         }
-    return pts;
+    return out;
   }
 
   // 1e-9: a length or diameter of exactly two cells up to rounding is accepted.
@@ -174,9 +289,7 @@ std::vector<Vec3d> lattice(const CaseSpec& spec, std::size_t k, double dx) {
     throw CaseError(spec.source_file, b.line, key,
                     body_name(spec, k) + " has a diameter of " + format_quantity(2 * b.radius, Dimension::Length) +
                         thin_hint);
-  const double layers = std::round(b.length / dx);
-  const double m = std::ceil(b.radius / dx);  // cross-section offsets (i + 1/2) dx for i in [-m, m)
-  const double estimate = layers * Constants<double>::pi * sqr(b.radius / dx);
+  const double estimate = std::round(b.length / dx) * Constants<double>::pi * sqr(b.radius / dx);
   if (estimate > kMaxParticles)
     throw CaseError(spec.source_file, b.line, key,
                     body_name(spec, k) + " would hold about " + format_quantity(estimate, Dimension::Dimensionless) +
@@ -184,25 +297,31 @@ std::vector<Vec3d> lattice(const CaseSpec& spec, std::size_t k, double dx) {
                         " (at most 1e9); use a coarser numerics.spacing");
   int u, v;
   cross_axes(b.axis, u, v);
-  // Relative tolerance so that points exactly on the circle (r a half-integer multiple of dx) are kept.
-  const double r2 = sqr(b.radius) * (1 + 1e-12);
+  const double base = b.base[b.axis];
+  const AxisCells layers = fill_axis(base, base + b.length, cuts_inside(spec, b.axis, base, base + b.length, dx), dx);
+  double s = fit_round_spacing(b.radius, dx, 2);
+  out.round_fitted = s > 0;
+  if (!out.round_fitted) s = dx;
+  const double q = round_q(b.radius, s);
   std::vector<std::pair<double, double>> section;
-  const long long mi = static_cast<long long>(m);
+  const long long mi = static_cast<long long>(std::ceil(b.radius / s)) + 1;
   for (long long j = -mi; j < mi; ++j)
-    for (long long i = -mi; i < mi; ++i) {
-      const double ou = (double(i) + 0.5) * dx, ov = (double(j) + 0.5) * dx;
-      if (ou * ou + ov * ov <= r2) section.emplace_back(ou, ov);
-    }
-  pts.reserve(static_cast<std::size_t>(layers) * section.size());
-  for (long long kk = 0; kk < static_cast<long long>(layers); ++kk)
+    for (long long i = -mi; i < mi; ++i)
+      if (in_round(q, fold(i), fold(j), 0, 2)) section.emplace_back((double(i) + 0.5) * s, (double(j) + 0.5) * s);
+  out.pts.reserve(layers.centre.size() * section.size());
+  for (std::size_t kk = 0; kk < layers.centre.size(); ++kk)
     for (const auto& [ou, ov] : section) {
-      Vec3d p = b.base;
-      p[b.axis] += (double(kk) + 0.5) * dx;
+      Vec3d p = b.base, cell;
+      p[b.axis] = layers.centre[kk];
       p[u] += ou;
       p[v] += ov;
-      pts.push_back(p);
+      cell[b.axis] = layers.width[kk];
+      cell[u] = s;
+      cell[v] = s;
+      out.pts.push_back(p);
+      out.cell.push_back(cell);
     }
-  return pts;
+  return out;
 }
 
 // Two bodies overlap when a particle of one lies inside the other's shape, or when particles of the two
@@ -278,7 +397,8 @@ void check_overlaps(const CaseSpec& spec, const ParticleSet& ps, const std::vect
 // particles on the model side of every plane, in lattice order, so a cylinder whose axis lies in two
 // planes becomes an exact quarter. A kept particle closer than dx/4 to a plane (one on the plane
 // included) would lie closer than dx/2 to its own mirror image, the overlap rule between bodies.
-void clip_to_symmetry(const CaseSpec& spec, std::vector<std::vector<Vec3d>>& pts, double dx) {
+// Returns the model side of each plane (+1: axis > position, -1: below), indexed like spec.symmetry.
+std::vector<int> clip_to_symmetry(const CaseSpec& spec, std::vector<BodyLattice>& lattices, double dx) {
   const double eps = 1e-9 * dx;
   const std::size_t nb = spec.bodies.size();
   std::vector<int> side(spec.symmetry.size(), 0);
@@ -297,14 +417,15 @@ void clip_to_symmetry(const CaseSpec& spec, std::vector<std::vector<Vec3d>>& pts
     std::size_t plus = 0, minus = 0;  // particles on either side, for when every body reaches across
     for (std::size_t k = 0; k < nb; ++k) {
       std::size_t above = 0, below = 0;
-      for (const Vec3d& p : pts[k]) {
+      const std::vector<Vec3d>& pts = lattices[k].pts;
+      for (const Vec3d& p : pts) {
         if (p[a] > plane.position + eps) ++above;
         if (p[a] < plane.position - eps) ++below;
       }
       plus += above;
       minus += below;
-      const int this_side = above == pts[k].size() ? 1 : (below == pts[k].size() ? -1 : 0);
-      if (this_side == 0 || pts[k].empty()) continue;
+      const int this_side = above == pts.size() ? 1 : (below == pts.size() ? -1 : 0);
+      if (this_side == 0 || pts.empty()) continue;
       if (first_body == nb) {
         first_body = k;
         side[s] = this_side;
@@ -316,7 +437,7 @@ void clip_to_symmetry(const CaseSpec& spec, std::vector<std::vector<Vec3d>>& pts
     }
     if (side[s] == 0) side[s] = plus >= minus ? 1 : -1;
   }
-  if (spec.symmetry.empty()) return;
+  if (spec.symmetry.empty()) return side;
 
   auto model_side = [&]() {
     std::string out;
@@ -327,9 +448,11 @@ void clip_to_symmetry(const CaseSpec& spec, std::vector<std::vector<Vec3d>>& pts
   };
   const double min_d = 0.25 * dx;
   for (std::size_t k = 0; k < nb; ++k) {
-    std::vector<Vec3d> kept;
-    kept.reserve(pts[k].size());
-    for (const Vec3d& p : pts[k]) {
+    const BodyLattice& all = lattices[k];
+    BodyLattice kept;
+    kept.round_fitted = all.round_fitted;
+    for (std::size_t i = 0; i < all.pts.size(); ++i) {
+      const Vec3d& p = all.pts[i];
       bool keep = true;
       std::size_t closest = 0;
       double closest_d = 1e300;
@@ -347,15 +470,17 @@ void clip_to_symmetry(const CaseSpec& spec, std::vector<std::vector<Vec3d>>& pts
                             format_quantity(2 * min_d, Dimension::Length) +
                             ") to its own mirror image; the plane must lie halfway between two layers of the "
                             "body's lattice (for a cylinder cut by the plane: its axis in the plane; for a sphere: its centre)");
-      kept.push_back(p);
+      kept.pts.push_back(p);
+      kept.cell.push_back(all.cell[i]);
     }
-    if (kept.empty() && !pts[k].empty())
+    if (kept.pts.empty() && !all.pts.empty())
       throw CaseError(spec.source_file, spec.bodies[k].line, body_key(k),
                       body_name(spec, k) + " would be clipped to nothing: none of its particles lies on the model "
                                            "side of every symmetry plane (" + model_side() +
                           "); move it, or remove it from the model");
-    pts[k] = std::move(kept);
+    lattices[k] = std::move(kept);
   }
+  return side;
 }
 
 bool in_fixed_region(const FixedRegionSpec& r, const Vec3d& p, double eps) {
@@ -445,7 +570,103 @@ void resolve_contacts(CaseSpec& spec) {
   }
 }
 
+double shape_volume(const BodySpec& b) {
+  if (b.shape == Shape::Box)
+    return (b.box_max.x - b.box_min.x) * (b.box_max.y - b.box_min.y) * (b.box_max.z - b.box_min.z);
+  if (b.shape == Shape::Sphere) return 4.0 / 3.0 * Constants<double>::pi * b.radius * b.radius * b.radius;
+  return Constants<double>::pi * sqr(b.radius) * b.length;
+}
+
+std::string percent(double ratio_minus_one) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%+.2f %%", std::abs(ratio_minus_one) < 1e-12 ? 0.0 : 100 * ratio_minus_one);
+  return text;
+}
+
+// What BodyInfo says of body k's geometry: its mass and sizes as specified and as generated, for the
+// whole body (along an axis on which a symmetry plane cuts the shape, the model's cells reach from the
+// plane and the whole body is their mirror image too), the lattice's spacing and stretch, and warnings
+// when the generated body differs from the specified one by more than 1 % or half a spacing in a size,
+// 0.1 % in mass, or when the lattice is stretched by more than 5 % to fit it.
+void describe_geometry(const CaseSpec& spec, std::size_t k, const BodyLattice& lat, const std::vector<int>& side,
+                       double dx, double rho0, double model_mass, double model_cells, double scale, BodyInfo& info) {
+  const BodySpec& b = spec.bodies[k];
+  const double copies = symmetry_multiplicity(spec, static_cast<int>(k));
+  info.specified_mass = rho0 * shape_volume(b);
+  info.generated_mass = copies * model_mass;
+  info.mass_scale = scale;
+
+  Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300}, width{0, 0, 0};
+  double stretch = 0;
+  for (std::size_t i = 0; i < lat.pts.size(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], lat.pts[i][a] - 0.5 * lat.cell[i][a]);
+      hi[a] = std::max(hi[a], lat.pts[i][a] + 0.5 * lat.cell[i][a]);
+      width[a] += lat.cell[i][a];
+      stretch = std::max(stretch, std::abs(lat.cell[i][a] / dx - 1));
+    }
+  const Box3 shape = shape_bounds(b);
+  for (std::size_t s = 0; s < spec.symmetry.size(); ++s) {
+    const int a = spec.symmetry[s].axis;
+    const double plane = spec.symmetry[s].position;
+    if (!(plane > shape.lo[a] && plane < shape.hi[a])) continue;
+    if (side[s] > 0) lo[a] = 2 * plane - hi[a];
+    else hi[a] = 2 * plane - lo[a];
+  }
+  const Vec3d extent = hi - lo;
+  info.lattice_spacing = width * (1.0 / double(lat.pts.size()));
+  info.max_stretch = stretch;
+
+  const double cells = copies * model_cells;  // m^3, the whole body's lattice cells
+  if (b.shape == Shape::Box) {
+    for (int a = 0; a < 3; ++a)
+      info.sizes.push_back({std::string(1, axis_name(a)), b.box_max[a] - b.box_min[a], extent[a]});
+  } else if (b.shape == Shape::Cylinder) {
+    info.sizes.push_back({"length", b.length, extent[b.axis]});
+    // The diameter of the circle whose area is the lattice's cross-section (cells over length).
+    info.sizes.push_back({"diameter", 2 * b.radius, 2 * std::sqrt(cells / (Constants<double>::pi * extent[b.axis]))});
+  } else {
+    info.sizes.push_back({"diameter", 2 * b.radius, 2 * std::cbrt(3 * cells / (4 * Constants<double>::pi))});
+  }
+
+  for (const BodySize& size : info.sizes) {
+    const double diff = size.generated - size.specified;
+    if (std::abs(diff) > 0.01 * size.specified || std::abs(diff) > 0.5 * dx)
+      info.warnings.push_back("its " + size.name + " is " + format_quantity(size.generated, Dimension::Length) +
+                              " against " + format_quantity(size.specified, Dimension::Length) + " specified (" +
+                              percent(size.generated / size.specified - 1) +
+                              "); a finer numerics.spacing fits the lattice to it more closely");
+  }
+  if (std::abs(info.generated_mass / info.specified_mass - 1) > 1e-3)
+    info.warnings.push_back("its mass is " + format_quantity(info.generated_mass, Dimension::Mass) + " against rho0 V = " +
+                            format_quantity(info.specified_mass, Dimension::Mass) + " (" +
+                            percent(info.generated_mass / info.specified_mass - 1) +
+                            "): a symmetry plane cuts it off its centre, so the model mirrored is not the body as "
+                            "specified; put the plane through the body's centre or axis");
+  if (!lat.round_fitted)
+    info.warnings.push_back("no round lattice within 10 % of the spacing holds exactly its " +
+                            std::string(b.shape == Shape::Sphere ? "volume" : "cross-section") +
+                            " (it is only a few spacings across); its particle masses are scaled by " +
+                            format_quantity(scale, Dimension::Dimensionless) +
+                            " to give it the mass rho0 V; a finer numerics.spacing avoids this");
+  if (stretch > 0.05)
+    info.warnings.push_back("its lattice is stretched by up to " + percent(stretch).substr(1) +
+                            " against the spacing to fit its size (mean cells " +
+                            format_quantity(info.lattice_spacing.x, Dimension::Length) + " x " +
+                            format_quantity(info.lattice_spacing.y, Dimension::Length) + " x " +
+                            format_quantity(info.lattice_spacing.z, Dimension::Length) +
+                            "); a spacing that divides its sizes, or a finer one, keeps the cells nearer cubic");
+}
+
 }  // namespace
+
+int symmetry_multiplicity(const CaseSpec& spec, int body) {
+  const Box3 shape = shape_bounds(spec.bodies[static_cast<std::size_t>(body)]);
+  int m = 1;
+  for (const SymmetryPlaneSpec& plane : spec.symmetry)
+    if (plane.position > shape.lo[plane.axis] && plane.position < shape.hi[plane.axis]) m *= 2;
+  return m;
+}
 
 Scene build_scene(const CaseSpec& spec) {
   const double dx = spec.numerics.spacing;
@@ -458,7 +679,8 @@ Scene build_scene(const CaseSpec& spec) {
   for (const MaterialSpec& m : spec.materials) scene.materials.push_back(m.params);
 
   // Lattices first, so that the symmetry planes can be decided from every body and clip them.
-  std::vector<std::vector<Vec3d>> pts(spec.bodies.size());
+  std::vector<BodyLattice> lattices(spec.bodies.size());
+  std::vector<double> mass_scale(spec.bodies.size(), 1.0);
   for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
     BodySpec& b = scene.spec.bodies[k];
     // A CaseSpec built in code may name its material without the index.
@@ -472,11 +694,16 @@ Scene build_scene(const CaseSpec& spec) {
     const MaterialSpec& m = spec.materials[b.material_index];
     if (!(m.params.eos.rho0 > 0))
       throw CaseError(spec.source_file, m.line, "materials." + m.name + ".density", "must be greater than zero");
-    pts[k] = lattice(spec, k, dx);
-    if (pts[k].empty())
+    lattices[k] = lattice(spec, k, dx);
+    if (lattices[k].pts.empty())
       throw CaseError(spec.source_file, b.line, body_key(k), body_name(spec, k) + " holds no particle at this spacing");
+    // The whole lattice's cells against the shape: 1 up to rounding where the lattice fits; otherwise the
+    // masses are scaled so that the body still has the mass rho0 V.
+    double cells = 0;
+    for (const Vec3d& c : lattices[k].cell) cells += c.x * c.y * c.z;
+    mass_scale[k] = shape_volume(b) / cells;
   }
-  clip_to_symmetry(scene.spec, pts, dx);
+  const std::vector<int> side = clip_to_symmetry(scene.spec, lattices, dx);
 
   ParticleSet& ps = scene.particles;
   std::vector<std::size_t> first{0};  // particles of body k are [first[k], first[k+1])
@@ -485,16 +712,18 @@ Scene build_scene(const CaseSpec& spec) {
   for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
     const BodySpec& b = scene.spec.bodies[k];
     const MaterialParams<double>& mat = spec.materials[b.material_index].params;
-    const double mass = mat.eos.rho0 * dx * dx * dx;
+    const BodyLattice& lat = lattices[k];
     const std::size_t n0 = ps.size();
-    ps.resize(n0 + pts[k].size());
-    Box3 box{pts[k][0], pts[k][0]};
-    for (std::size_t i = 0; i < pts[k].size(); ++i) {
-      const Vec3d& q = pts[k][i];
+    ps.resize(n0 + lat.pts.size());
+    Box3 box{lat.pts[0], lat.pts[0]};
+    double model_mass = 0, model_cells = 0;
+    for (std::size_t i = 0; i < lat.pts.size(); ++i) {
+      const Vec3d& q = lat.pts[i];
+      const Vec3d& c = lat.cell[i];
       const std::size_t p = n0 + i;
       ps.pos[p] = q;
       ps.vel[p] = b.velocity;
-      ps.mass[p] = mass;
+      ps.mass[p] = mat.eos.rho0 * c.x * c.y * c.z * mass_scale[k];  // rho0 times the particle's cell
       ps.rho[p] = mat.eos.rho0;
       ps.energy[p] = 0;
       ps.pressure[p] = 0;  // every EOS gives P = 0 at rho = rho0, e = 0
@@ -507,6 +736,8 @@ Scene build_scene(const CaseSpec& spec) {
       ps.body[p] = static_cast<std::int32_t>(k);
       ps.material[p] = b.material_index;
       ps.fixed[p] = 0;
+      model_mass += ps.mass[p];
+      model_cells += c.x * c.y * c.z;
       for (int a = 0; a < 3; ++a) box.lo[a] = std::min(box.lo[a], q[a]), box.hi[a] = std::max(box.hi[a], q[a]);
     }
     first.push_back(ps.size());
@@ -515,8 +746,9 @@ Scene build_scene(const CaseSpec& spec) {
     BodyInfo info;
     info.name = b.name;
     info.material = b.material_index;
-    info.particle_count = pts[k].size();  // after clipping by the symmetry planes
-    info.initial_mass = mass * double(pts[k].size());
+    info.particle_count = lat.pts.size();  // after clipping by the symmetry planes
+    info.initial_mass = model_mass;
+    describe_geometry(scene.spec, k, lat, side, dx, mat.eos.rho0, model_mass, model_cells, mass_scale[k], info);
     scene.bodies.push_back(info);
   }
   if (ps.size() == 0) throw CaseError(spec.source_file, 0, "bodies", "the case holds no particle");

@@ -7,11 +7,27 @@
 
 namespace impactsph {
 
+// One size of a body as the case gives it and as its lattice makes it, both for the whole physical body
+// (a body cut by symmetry planes is mirrored back to whole).
+struct BodySize {
+  std::string name;      // "x", "y", "z" (box extents), "length", "diameter"
+  double specified = 0;  // m
+  double generated = 0;  // m
+};
+
 struct BodyInfo {
   std::string name;
   int material = -1;
-  std::size_t particle_count = 0;
-  double initial_mass = 0;  // kg
+  std::size_t particle_count = 0;  // of the model, after clipping by the symmetry planes
+  double initial_mass = 0;         // kg, of the model
+  // The body as specified and as generated, whole (symmetry_multiplicity copies of the model).
+  double specified_mass = 0;       // kg, rho0 V of the shape
+  double generated_mass = 0;       // kg
+  std::vector<BodySize> sizes;     // box: x, y, z; cylinder: length, diameter; sphere: diameter
+  Vec3d lattice_spacing{0, 0, 0};  // m, mean width of the lattice cells along x, y, z
+  double max_stretch = 0;          // largest |cell width / spacing - 1| over the axes (the lattice's stretch)
+  double mass_scale = 1;           // particle mass over rho0 x cell volume: 1 where the lattice fits the shape
+  std::vector<std::string> warnings;  // what `impactsph check` and `run` print about the body's geometry
 };
 
 struct Scene {
@@ -21,8 +37,12 @@ struct Scene {
   std::vector<MaterialParams<double>> materials;  // indexed like spec.materials
 };
 
-// Builds the particles on a regular cubic lattice at spec.numerics.spacing; throws CaseError when the
-// geometry is impossible (bodies that overlap, a body thinner than two particles, ...).
+// Builds the particles of each body on a lattice fitted to its shape at about spec.numerics.spacing (see
+// scene.cpp); throws CaseError when the geometry is impossible (bodies that overlap, a body thinner than
+// two particles, ...).
 Scene build_scene(const CaseSpec& spec);
+
+// How many copies of a body's model make the whole body: 2 for each symmetry plane that cuts its shape.
+int symmetry_multiplicity(const CaseSpec& spec, int body);
 
 }  // namespace impactsph
