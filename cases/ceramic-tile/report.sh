@@ -18,7 +18,7 @@
 #            must not move with the CFL number, physics-notes)
 #   fixh-DX  PAM at the smoothing length of the 1.5875 mm run (1.905 mm), CSLH = 1.905 mm/DX, and
 #            Q2 = 1.0 DX/1.5875 mm (X eq 35): the spacing study of X section 5 / Table 6.
-# The spacings are 12.7 mm/k so that the tile is a whole number of layers (case.toml).
+# The spacings are 12.7 mm/k, at which the tile's fitted lattice is cubic (case.toml).
 # PCM: X's PFACT = 1 scales LS-DYNA's penalty stiffness, which X does not give; this code's penalty is F's
 # (eqs 4.1-4.6), whose K_p must stay small for the explicit midpoint rule (cases/plate-8mm/case.toml:
 # omega dt = sqrt(K_p)), so the plate cases' 0.05 is used. F's penalty force K_p m* p / dt^2 (eq 4.4) stiffens as
