@@ -888,8 +888,8 @@ void read_contacts(const View& root, CaseSpec& spec) {
 
 void read_numerics(const View& root, NumericsSpec& num) {
   const View n = root.sub("numerics", "[numerics]", "[numerics] with spacing = \"0.5 mm\"");
-  n.allow({"spacing", "kernel", "h_factor", "viscosity_linear", "viscosity_quadratic", "viscosity_balsara", "delta",
-           "cfl", "correction_max_condition"});
+  n.allow({"spacing", "kernel", "h_factor", "viscosity_linear", "viscosity_quadratic", "viscosity_balsara",
+           "bulk_viscosity_linear", "bulk_viscosity_quadratic", "delta", "cfl", "correction_max_condition"});
   num.spacing = n.quantity("spacing", Dimension::Length);
   num.spacing_line = line_of(n.find("spacing"));
   n.positive("spacing", num.spacing, Dimension::Length);
@@ -902,6 +902,10 @@ void read_numerics(const View& root, NumericsSpec& num) {
   num.viscosity.quadratic = n.number_or("viscosity_quadratic", 1.0);
   n.non_negative("viscosity_quadratic", num.viscosity.quadratic, Dimension::Dimensionless);
   num.viscosity_balsara = n.boolean_or("viscosity_balsara", false);
+  num.bulk_viscosity.linear = n.number_or("bulk_viscosity_linear", 0.0);
+  n.range("bulk_viscosity_linear", num.bulk_viscosity.linear, 0, 5, Dimension::Dimensionless);
+  num.bulk_viscosity.quadratic = n.number_or("bulk_viscosity_quadratic", 0.0);
+  n.range("bulk_viscosity_quadratic", num.bulk_viscosity.quadratic, 0, 5, Dimension::Dimensionless);
   num.delta = n.number_or("delta", 0.1);
   n.range("delta", num.delta, 0, 1, Dimension::Dimensionless);
   num.cfl = n.number_or("cfl", 0.2);

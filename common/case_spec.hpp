@@ -79,6 +79,7 @@ struct NumericsSpec {
   double h_factor = 1.2;       // h = h_factor * dx (X: CSLH = 1.2)
   ViscosityParams<double> viscosity{1.0, 1.0};
   bool viscosity_balsara = false;  // scale the viscosity by the Balsara shear limiter (viscosity.hpp)
+  BulkViscosityParams<double> bulk_viscosity{};  // volumetric viscosity in compression (viscosity.hpp); 0, 0: off
   double delta = 0.1;          // delta-SPH coefficient (F Table 3)
   double cfl = 0.2;            // C_CFL of F eq 5.1
   CorrectionParams<double> correction{};

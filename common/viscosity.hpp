@@ -22,6 +22,31 @@ IMPACTSPH_HD Real monaghan_viscosity(const ViscosityParams<Real>& p, Vec3<Real> 
   return (-p.linear * c_mean * phi + p.quadratic * phi * phi) / rho_mean;
 }
 
+// Bulk (volumetric) viscosity, the von Neumann-Richtmyer form of finite-element solid elements (LS-DYNA's
+// *CONTROL_BULK_VISCOSITY, Q1 quadratic and Q2 linear; Hallquist, LS-DYNA Theory Manual, "Artificial Bulk
+// Viscosity"), taken from the particle's own corrected velocity divergence and the particle length l = h:
+//   q = rho l (quadratic l (div v)^2 - linear c div v)   where div v < 0, else 0   (Pa),
+// added to the pressure. It acts on the volumetric rate alone, so isochoric (plastic) flow feels none of it,
+// unlike the pairwise Monaghan term, which also resists shear. Both coefficients 0: off.
+template <class Real>
+struct BulkViscosityParams {
+  Real linear = Real(0);
+  Real quadratic = Real(0);
+};
+
+template <class Real>
+IMPACTSPH_HD Real bulk_viscosity(const BulkViscosityParams<Real>& p, Real div_v, Real rho, Real sound_speed, Real h) {
+  if (!(div_v < Real(0))) return Real(0);
+  return rho * h * (p.quadratic * h * div_v * div_v - p.linear * sound_speed * div_v);
+}
+
+// The bulk viscosity's share of (S - P I) / rho^2: -q / rho^2 on the diagonal (m^5 kg^-1 s^-2).
+template <class Real>
+IMPACTSPH_HD Real bulk_viscosity_over_rho2(const BulkViscosityParams<Real>& p, Real div_v, Real rho, Real sound_speed,
+                                           Real h) {
+  return bulk_viscosity(p, div_v, rho, sound_speed, h) / (rho * rho);
+}
+
 // Balsara (1995) shear limiter of particle i, in [0, 1]: |div v| / (|div v| + |curl v| + 0.0001 c/h).
 // Near 1 in compression (shocks), near 0 in shear and isochoric plastic flow, where the Monaghan term
 // otherwise acts as a physical viscosity. The pair uses the mean of the two factors.

@@ -169,6 +169,8 @@ struct Params {
   Real delta;
   Real cfl;
   bool balsara;
+  BulkViscosityParams<Real> bulk;  // volumetric viscosity in compression (common/viscosity.hpp)
+  bool bulk_on;
   int body_count;
   int plane_count;
   Plane planes[kMaxPlanes];
@@ -290,6 +292,9 @@ class Solver final : public GpuStepper {
     params_.delta = static_cast<Real>(numerics_.delta);
     params_.cfl = static_cast<Real>(numerics_.cfl);
     params_.balsara = numerics_.viscosity_balsara;
+    params_.bulk = BulkViscosityParams<Real>{static_cast<Real>(numerics_.bulk_viscosity.linear),
+                                             static_cast<Real>(numerics_.bulk_viscosity.quadratic)};
+    params_.bulk_on = numerics_.bulk_viscosity.linear > 0 || numerics_.bulk_viscosity.quadratic > 0;
     params_.body_count = static_cast<int>(scene.bodies.size());
     params_.plane_count = static_cast<int>(scene.spec.symmetry.size());
     for (int k = 0; k < params_.plane_count; ++k) {
@@ -820,6 +825,10 @@ class Solver final : public GpuStepper {
       fell[i] = cg.fell_back ? 1 : 0;
       ncount[i] = count;
       w.av[s] = prm.balsara ? balsara_factor(cg.grad_v, w.c[s], hi) : Real(1);
+      if (prm.bulk_on) {  // the bulk viscosity joins the pressure in (S - P I)/rho^2 (pass 1 does not read A)
+        const Real q = bulk_viscosity_over_rho2(prm.bulk, cg.grad_v.trace(), rhoi, w.c[s], hi);
+        w.A[s].xx -= q; w.A[s].yy -= q; w.A[s].zz -= q;
+      }
     });
     launch<kFlush>("ghost_pass1", ghosts_, [=] IMPACTSPH_LAMBDA(std::int64_t k) {
       const std::int64_t s = slot[n + k], src = slot[gsrc[k]];
@@ -827,6 +836,7 @@ class Solver final : public GpuStepper {
       w.linv[s] = mirror(w.linv[src], sg);
       w.grad_rho[s] = hadamard(sg, w.grad_rho[src]);
       w.av[s] = w.av[src];
+      if (prm.bulk_on) w.A[s] = mirror(w.A[src], sg);
     });
     stats_.correction_fallbacks =
         static_cast<std::size_t>(thrust::reduce(fallback_.begin(), fallback_.begin() + n, std::int64_t(0)));

@@ -166,12 +166,24 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < ni; ++i)
     av_factor_[i] = numerics_.viscosity_balsara ? balsara_factor(grad_v_[i], sound_speed_[i], hh_[i]) : 1.0;
+  // Bulk viscosity (viscosity.hpp) from each particle's own div v, added to its pressure in (S - P I)/rho^2;
+  // a ghost carries its source's (isotropic, so its mirror is itself).
+  const BulkViscosityParams<double> bulk = numerics_.bulk_viscosity;
+  const bool bulk_on = bulk.linear > 0 || bulk.quadratic > 0;
+  if (bulk_on) {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < ni; ++i) {
+      const double q = bulk_viscosity_over_rho2(bulk, grad_v_[i].trace(), rho_[i], sound_speed_[i], hh_[i]);
+      s_over_rho2_[i].xx -= q; s_over_rho2_[i].yy -= q; s_over_rho2_[i].zz -= q;
+    }
+  }
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
     const Ghost& g = ghosts_[k];
     const std::size_t s = static_cast<std::size_t>(g.source);
     l_inverse_[n + k] = mirror(l_inverse_[s], g.sign);
     grad_rho_[n + k] = hadamard(g.sign, grad_rho_[s]);
     av_factor_[n + k] = av_factor_[s];
+    if (bulk_on) s_over_rho2_[n + k] = mirror(s_over_rho2_[s], g.sign);
   }
 
   // Constitutive rate: Jaumann deviatoric stress rate of the body's strength model (F 3.5-3.7).

@@ -193,11 +193,15 @@ axis = "y"
 )";
   const std::string t2 = with("spacing = \"0.5 mm\"",
                               "spacing = \"0.5 mm\"\nkernel = \"cubic-spline\"\nh_factor = 1.5\ncfl = 0.3\n"
-                              "viscosity_linear = 0.5\nviscosity_quadratic = 2\ndelta = 0\ncorrection_max_condition = 50",
+                              "viscosity_linear = 0.5\nviscosity_quadratic = 2\ndelta = 0\ncorrection_max_condition = 50\n"
+                              "bulk_viscosity_linear = 0.5\nbulk_viscosity_quadratic = 1",
                               with("output_interval = \"1 us\"",
                                    "output_interval = \"1 us\"\nframe_interval = \"0.5 us\"\ncheckpoint_interval = \"10 us\"",
                                    toml));
   const CaseSpec s = parse_case_string(t2, "case.toml");
+  EXPECT_DOUBLE_EQ(s.numerics.bulk_viscosity.linear, 0.5);
+  EXPECT_DOUBLE_EQ(s.numerics.bulk_viscosity.quadratic, 1);
+  EXPECT_DOUBLE_EQ(parse_case_string(toml, "case.toml").numerics.bulk_viscosity.linear, 0);  // off by default
   EXPECT_FALSE(s.output.vtu);
   EXPECT_TRUE(s.output.csv);
   ASSERT_EQ(s.fixed.size(), 2u);
@@ -583,6 +587,8 @@ TEST(CaseFileErrors, NumericsOutOfRange) {
       {"delta = -0.1", "numerics.delta", "at least 0"},
       {"viscosity_linear = -1", "numerics.viscosity_linear", "must not be negative"},
       {"viscosity_quadratic = -1", "numerics.viscosity_quadratic", "must not be negative"},
+      {"bulk_viscosity_linear = -0.5", "numerics.bulk_viscosity_linear", "at least 0"},
+      {"bulk_viscosity_quadratic = 6", "numerics.bulk_viscosity_quadratic", "at most 5"},
       {"correction_max_condition = 2", "numerics.correction_max_condition", "greater than 3"},
   };
   for (const Case& c : cases) {

@@ -60,6 +60,27 @@ TYPED_TEST(ViscosityTyped, ApproachingPairByHand) {
   EXPECT_GT(monaghan_viscosity(ViscosityParams<Real>{Real(1), Real(1)}, xij, uij, h, c, rho), Real(0));
 }
 
+// Bulk viscosity q = rho h (quadratic h div^2 - linear c div) in compression, by hand: div v = -1e4 /s,
+// rho = 8960 kg/m^3, c = 3940 m/s, h = 0.6 mm: the linear term 8960 * 6e-4 * 3940 * 1e4 = 2.118144e8 Pa, the
+// quadratic 8960 * 6e-4 * 6e-4 * 1e8 = 3.2256e5 Pa. Zero in expansion and in isochoric flow (div v = 0),
+// whatever the shear: it is what separates it from the pairwise Monaghan term.
+TYPED_TEST(ViscosityTyped, BulkViscosityByHand) {
+  using Real = TypeParam;
+  const double tol = std::is_same<Real, double>::value ? 1e-12 : 1e-6;
+  const Real rho = Real(8960), c = Real(3940), h = Real(6e-4);
+  const double lin = 2.118144e8, quad = 3.2256e5;
+  EXPECT_NEAR(double(bulk_viscosity(BulkViscosityParams<Real>{Real(1), Real(0)}, Real(-1e4), rho, c, h)), lin, tol * lin);
+  EXPECT_NEAR(double(bulk_viscosity(BulkViscosityParams<Real>{Real(0), Real(1)}, Real(-1e4), rho, c, h)), quad, tol * quad);
+  EXPECT_NEAR(double(bulk_viscosity(BulkViscosityParams<Real>{Real(0.5), Real(1.5)}, Real(-1e4), rho, c, h)),
+              0.5 * lin + 1.5 * quad, tol * lin);
+  EXPECT_NEAR(double(bulk_viscosity_over_rho2(BulkViscosityParams<Real>{Real(1), Real(0)}, Real(-1e4), rho, c, h)),
+              lin / (8960.0 * 8960.0), tol * lin / (8960.0 * 8960.0));
+  const BulkViscosityParams<Real> on{Real(1), Real(1)};
+  EXPECT_EQ(bulk_viscosity(on, Real(1e4), rho, c, h), Real(0));  // expansion
+  EXPECT_EQ(bulk_viscosity(on, Real(0), rho, c, h), Real(0));    // isochoric flow, e.g. pure shear
+  EXPECT_EQ(bulk_viscosity(BulkViscosityParams<Real>{}, Real(-1e4), rho, c, h), Real(0));  // off by default
+}
+
 // Naming (physics-notes): `linear` is F's kappa1 and X's Q2, the coefficient of the term LINEAR in the
 // velocity jump, which multiplies the sound speed; `quadratic` (F's kappa2, X's Q1) does not involve c.
 TYPED_TEST(ViscosityTyped, LinearCoefficientMultipliesSoundSpeed) {
