@@ -187,8 +187,9 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   const CaseObservables& o = r.observables;
   if (r.settled) std::printf("  stopped early: the residual velocity was steady\n");
   if (o.taylor_bar)
-    std::printf("final_length: %.4f mm\nimpact_face_diameter: %.4f mm\n", o.final_length * 1e3,
-                o.impact_face_diameter * 1e3);
+    std::printf("final_length: %.4f mm\nimpact_face_diameter: %.4f mm\nimpact_face_diameter_shifted: %.4f mm\n"
+                "impact_face_diameter_area: %.4f mm\n", o.final_length * 1e3, o.impact_face_diameter * 1e3,
+                o.impact_face_diameter_shifted * 1e3, o.impact_face_diameter_area * 1e3);
   if (o.projectile) {
     std::printf("residual_velocity: %.2f m/s\nresidual_mass: %.2f g\neroded_mass: %.2f g\n", o.residual_velocity,
                 o.residual_mass * 1e3, o.eroded_mass * 1e3);

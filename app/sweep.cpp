@@ -508,7 +508,7 @@ std::string observable_unit(const std::string& key) {
   if (key.find("velocity") != std::string::npos) return "m/s";
   if (key.find("mass") != std::string::npos) return "kg";
   if (key.find("time") != std::string::npos) return "s";
-  if (key == "final_length" || key == "impact_face_diameter") return "m";
+  if (key == "final_length" || key.rfind("impact_face_diameter", 0) == 0) return "m";
   return "";
 }
 

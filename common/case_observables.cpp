@@ -76,7 +76,8 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
     // The bar's lattice: layers dz apart along its axis, cross-section spacing ds (scene.cpp).
     const Vec3d& cell = scene.bodies[static_cast<std::size_t>(body)].lattice_spacing;
     const double dz = cell[axis], ds = cell[(axis + 1) % 3];
-    double far = 0, r_face = 0;
+    // The outermost centre radius and the volume of the layer within dz of the wall.
+    double far = 0, r_face = 0, layer_volume = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (p.body[i] != body) continue;
       const double along = std::abs(p.pos[i][axis] - wall);
@@ -86,12 +87,17 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
         for (int a = 0; a < 3; ++a)
           if (a != axis) r2 += sqr(p.pos[i][a] - b.base[a]);
         r_face = std::max(r_face, std::sqrt(r2));
+        layer_volume += p.mass[i] / p.rho[i];
       }
     }
+    const double r_face0 = scene.bodies[static_cast<std::size_t>(body)].outer_centre_radius;  // as built, t = 0
+    const double copies = symmetry_multiplicity(spec, body);  // the planes through the bar's axis
     // A particle stands for its cell: the body extends half a cell past the outermost centres.
     out.taylor_bar = true;
     out.final_length = far + 0.5 * dz;
     out.impact_face_diameter = 2 * (r_face + 0.5 * ds);
+    out.impact_face_diameter_shifted = 2 * (r_face + b.radius - r_face0);
+    out.impact_face_diameter_area = 2 * std::sqrt(copies * layer_volume / (dz * Constants<double>::pi));
   }
 
   Vec3d direction{0, 0, 0};

@@ -12,7 +12,10 @@ namespace impactsph {
 struct CaseObservables {
   bool taylor_bar = false;
   double final_length = 0;          // m, from the wall plane to the far end of the bar
-  double impact_face_diameter = 0;  // m, of the layer of particles on the wall
+  double impact_face_diameter = 0;  // m, of the layer of particles on the wall: 2 (r_max + ds/2)
+  // Two face measures without the lattice's bias (issue 19), both 2 R0 at t = 0:
+  double impact_face_diameter_shifted = 0;  // m, 2 (r_max(t) + R0 - r_max(0)), r_max of the wall layer's centres
+  double impact_face_diameter_area = 0;     // m, of the circle of the wall layer's area, sum (m/rho) / dz, whole bar
   bool projectile = false;
   double residual_velocity = 0;     // m/s, mass-weighted velocity along the initial direction
   double residual_mass = 0;         // kg, initial mass less the particles with D >= 0.99 (X section 3.1)

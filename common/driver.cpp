@@ -150,6 +150,8 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
   if (o.taylor_bar) {
     obs["final_length"] = o.final_length;
     obs["impact_face_diameter"] = o.impact_face_diameter;
+    obs["impact_face_diameter_shifted"] = o.impact_face_diameter_shifted;
+    obs["impact_face_diameter_area"] = o.impact_face_diameter_area;
   }
   if (o.projectile) {
     obs["residual_velocity"] = o.residual_velocity;

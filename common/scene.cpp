@@ -622,6 +622,10 @@ void describe_geometry(const CaseSpec& spec, std::size_t k, const BodyLattice& l
     for (int a = 0; a < 3; ++a)
       info.sizes.push_back({std::string(1, axis_name(a)), b.box_max[a] - b.box_min[a], extent[a]});
   } else if (b.shape == Shape::Cylinder) {
+    int u, v;
+    cross_axes(b.axis, u, v);
+    for (const Vec3d& q : lat.pts)
+      info.outer_centre_radius = std::max(info.outer_centre_radius, std::hypot(q[u] - b.base[u], q[v] - b.base[v]));
     info.sizes.push_back({"length", b.length, extent[b.axis]});
     // The diameter of the circle whose area is the lattice's cross-section (cells over length).
     info.sizes.push_back({"diameter", 2 * b.radius, 2 * std::sqrt(cells / (Constants<double>::pi * extent[b.axis]))});

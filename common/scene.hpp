@@ -26,6 +26,7 @@ struct BodyInfo {
   std::vector<BodySize> sizes;     // box: x, y, z; cylinder: length, diameter; sphere: diameter
   Vec3d lattice_spacing{0, 0, 0};  // m, mean width of the lattice cells along x, y, z
   double max_stretch = 0;          // largest |cell width / spacing - 1| over the axes (the lattice's stretch)
+  double outer_centre_radius = 0;  // m, cylinder: largest distance of a particle centre from its axis, as built
   double mass_scale = 1;           // particle mass over rho0 x cell volume: 1 where the lattice fits the shape
   std::vector<std::string> warnings;  // what `impactsph check` and `run` print about the body's geometry
 };
