@@ -44,13 +44,13 @@ const char* shape_name(const BodySpec& b) {
   return b.shape == Shape::Box ? "box" : (b.shape == Shape::Sphere ? "sphere" : "cylinder");
 }
 
-// The warnings of the scene builder about bodies whose generated geometry departs from the case's.
 // A relative difference in per cent, rounding noise shown as zero.
 double percent_difference(double generated, double specified) {
   const double d = generated / specified - 1;
   return std::abs(d) < 5e-10 ? 0.0 : 100 * d;
 }
 
+// The warnings of the scene builder about bodies whose generated geometry departs from the case's.
 void print_geometry_warnings(const Scene& scene, std::FILE* to) {
   for (std::size_t k = 0; k < scene.bodies.size(); ++k)
     for (const std::string& w : scene.bodies[k].warnings)

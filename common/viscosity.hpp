@@ -40,11 +40,21 @@ IMPACTSPH_HD Real bulk_viscosity(const BulkViscosityParams<Real>& p, Real div_v,
   return rho * h * (p.quadratic * h * div_v * div_v - p.linear * sound_speed * div_v);
 }
 
-// The bulk viscosity's share of (S - P I) / rho^2: -q / rho^2 on the diagonal (m^5 kg^-1 s^-2).
+// The bulk viscosity's share of (S - P I) / rho^2: q / rho^2, taken off the diagonal (m^5 kg^-1 s^-2).
 template <class Real>
 IMPACTSPH_HD Real bulk_viscosity_over_rho2(const BulkViscosityParams<Real>& p, Real div_v, Real rho, Real sound_speed,
                                            Real h) {
   return bulk_viscosity(p, div_v, rho, sound_speed, h) / (rho * rho);
+}
+
+// Adds the bulk viscosity to a particle's A = (S - P I) / rho^2 as to its pressure: A - (q / rho^2) I.
+template <class Real>
+IMPACTSPH_HD void add_bulk_viscosity(const BulkViscosityParams<Real>& p, Real div_v, Real rho, Real sound_speed, Real h,
+                                     Sym3<Real>& a) {
+  const Real q = bulk_viscosity_over_rho2(p, div_v, rho, sound_speed, h);
+  a.xx -= q;
+  a.yy -= q;
+  a.zz -= q;
 }
 
 // Balsara (1995) shear limiter of particle i, in [0, 1]: |div v| / (|div v| + |curl v| + 0.0001 c/h).

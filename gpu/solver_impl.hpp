@@ -825,10 +825,8 @@ class Solver final : public GpuStepper {
       fell[i] = cg.fell_back ? 1 : 0;
       ncount[i] = count;
       w.av[s] = prm.balsara ? balsara_factor(cg.grad_v, w.c[s], hi) : Real(1);
-      if (prm.bulk_on) {  // the bulk viscosity joins the pressure in (S - P I)/rho^2 (pass 1 does not read A)
-        const Real q = bulk_viscosity_over_rho2(prm.bulk, cg.grad_v.trace(), rhoi, w.c[s], hi);
-        w.A[s].xx -= q; w.A[s].yy -= q; w.A[s].zz -= q;
-      }
+      // The bulk viscosity joins the pressure in (S - P I)/rho^2 (pass 1 does not read A).
+      if (prm.bulk_on) add_bulk_viscosity(prm.bulk, cg.grad_v.trace(), rhoi, w.c[s], hi, w.A[s]);
     });
     launch<kFlush>("ghost_pass1", ghosts_, [=] IMPACTSPH_LAMBDA(std::int64_t k) {
       const std::int64_t s = slot[n + k], src = slot[gsrc[k]];

@@ -172,10 +172,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   const bool bulk_on = bulk.linear > 0 || bulk.quadratic > 0;
   if (bulk_on) {
 #pragma omp parallel for schedule(static)
-    for (std::int64_t i = 0; i < ni; ++i) {
-      const double q = bulk_viscosity_over_rho2(bulk, grad_v_[i].trace(), rho_[i], sound_speed_[i], hh_[i]);
-      s_over_rho2_[i].xx -= q; s_over_rho2_[i].yy -= q; s_over_rho2_[i].zz -= q;
-    }
+    for (std::int64_t i = 0; i < ni; ++i)
+      add_bulk_viscosity(bulk, grad_v_[i].trace(), rho_[i], sound_speed_[i], hh_[i], s_over_rho2_[i]);
   }
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
     const Ghost& g = ghosts_[k];

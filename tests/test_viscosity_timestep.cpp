@@ -79,6 +79,16 @@ TYPED_TEST(ViscosityTyped, BulkViscosityByHand) {
   EXPECT_EQ(bulk_viscosity(on, Real(1e4), rho, c, h), Real(0));  // expansion
   EXPECT_EQ(bulk_viscosity(on, Real(0), rho, c, h), Real(0));    // isochoric flow, e.g. pure shear
   EXPECT_EQ(bulk_viscosity(BulkViscosityParams<Real>{}, Real(-1e4), rho, c, h), Real(0));  // off by default
+  // Into A = (S - P I)/rho^2 as a pressure: the diagonal less q/rho^2, the shear terms untouched.
+  Sym3<Real> a{Real(1), Real(2), Real(3), Real(4), Real(5), Real(6)};
+  add_bulk_viscosity(BulkViscosityParams<Real>{Real(1), Real(0)}, Real(-1e4), rho, c, h, a);
+  const double q = lin / (8960.0 * 8960.0);
+  EXPECT_NEAR(double(a.xx), 1 - q, tol * q);
+  EXPECT_NEAR(double(a.yy), 2 - q, tol * q);
+  EXPECT_NEAR(double(a.zz), 3 - q, tol * q);
+  EXPECT_EQ(a.xy, Real(4));
+  EXPECT_EQ(a.yz, Real(5));
+  EXPECT_EQ(a.zx, Real(6));
 }
 
 // Naming (physics-notes): `linear` is F's kappa1 and X's Q2, the coefficient of the term LINEAR in the

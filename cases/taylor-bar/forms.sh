@@ -76,7 +76,8 @@ for form, sets in forms:
         lines.append(f"| {form} | {dx} | {L:.2f} ({100*(L/length_x-1):+.1f} %) | "
                      f"{F:.2f} ({100*(F/face_x-1):+.1f} %) | {other} | {heat} | {j['steps']} | {j['wall_time_s']:.0f} | "
                      f"{j['hardware']['threads']} | {100*j['totals']['energy_drift_relative']:.3f} % |")
-lines += ["", "Wall times of runs that may have shared the machine; compare them only within one form.", ""]
+lines += ["", "Runs are kept between invocations (a run made by an earlier commit stays; delete its folder to run it",
+          "again). Wall times are of runs that may have shared the machine; compare them only within one form.", ""]
 open(out, 'w').write("\n".join(lines))
 print("wrote", out)
 PY
