@@ -31,6 +31,7 @@
 #include "common/driver.hpp"
 #include "common/errors.hpp"
 #include "common/output.hpp"
+#include "common/mesh_solid.hpp"
 #include "common/scene.hpp"
 #include "common/units.hpp"
 #include "reference/solver.hpp"
@@ -202,7 +203,13 @@ PlugForm plug_form(const CaseSpec& spec) {
     if (b.shape == Shape::Cylinder) {
       if (b.axis != axis) return false;
       area = kPi * b.radius * b.radius;
-      length = std::abs(b.length);
+      length = shape_volume(b) / area;  // a nose counts by its volume
+      return true;
+    }
+    if (b.shape == Shape::Mesh) {
+      // The extent along the impact axis, and the mean cross-section that gives the mesh's volume.
+      length = b.mesh->upper()[axis] - b.mesh->lower()[axis];
+      area = shape_volume(b) / length;
       return true;
     }
     area = 1;

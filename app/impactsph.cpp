@@ -41,7 +41,19 @@ struct CaseArgs {
 };
 
 const char* shape_name(const BodySpec& b) {
-  return b.shape == Shape::Box ? "box" : (b.shape == Shape::Sphere ? "sphere" : "cylinder");
+  switch (b.shape) {
+    case Shape::Box: return "box";
+    case Shape::Sphere: return "sphere";
+    case Shape::Mesh: return "mesh";
+    case Shape::Cylinder: break;
+  }
+  switch (b.nose) {
+    case Nose::Hemispherical: return "hemi-nosed";
+    case Nose::Conical: return "cone-nosed";
+    case Nose::Ogival: return "ogive-nosed";
+    case Nose::Flat: break;
+  }
+  return "cylinder";
 }
 
 // A relative difference in per cent, rounding noise shown as zero.
@@ -65,16 +77,16 @@ void print_scene(const Scene& scene, double dt) {
   std::printf("spacing   %.6g mm, h = %.6g mm (h/dx = %.3g), kernel %s\n", s.numerics.spacing * 1e3,
               s.numerics.spacing * s.numerics.h_factor * 1e3, s.numerics.h_factor,
               s.numerics.kernel == KernelKind::WendlandC2 ? "Wendland C2" : "cubic spline");
-  std::printf("\n%-16s %-16s %-9s %10s %12s %10s\n", "body", "material", "shape", "particles", "mass [g]", "fixed");
+  std::printf("\n%-16s %-16s %-11s %10s %12s %10s\n", "body", "material", "shape", "particles", "mass [g]", "fixed");
   for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
     std::size_t fixed = 0;
     for (std::size_t i = 0; i < scene.particles.size(); ++i)
       if (scene.particles.body[i] == static_cast<int>(k) && scene.particles.fixed[i]) ++fixed;
     const BodyInfo& b = scene.bodies[k];
-    std::printf("%-16s %-16s %-9s %10zu %12.6g %10zu\n", b.name.c_str(), s.materials[b.material].name.c_str(),
+    std::printf("%-16s %-16s %-11s %10zu %12.6g %10zu\n", b.name.c_str(), s.materials[b.material].name.c_str(),
                 shape_name(s.bodies[k]), b.particle_count, b.initial_mass * 1e3, fixed);
   }
-  std::printf("%-16s %-16s %-9s %10zu\n", "total", "", "", scene.particles.size());
+  std::printf("%-16s %-16s %-11s %10zu\n", "total", "", "", scene.particles.size());
   std::printf("\nbodies as specified and as generated (whole bodies; each lattice is fitted to its shape)\n");
   std::printf("%-16s %-10s %14s %14s %11s\n", "body", "", "specified", "generated", "difference");
   for (const BodyInfo& b : scene.bodies) {

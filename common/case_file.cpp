@@ -15,6 +15,7 @@
 #include <toml++/toml.h>
 
 #include "common/errors.hpp"
+#include "common/mesh_solid.hpp"
 #include "common/units.hpp"
 
 namespace impactsph {
@@ -627,10 +628,15 @@ std::vector<MaterialSpec> read_materials(const View& root) {
 // ---------------------------------------------------------------------------------------------------
 // Bodies and boundaries
 
-const Keys kShapes{"box", "cylinder", "disk", "plate", "sphere"};
+const Keys kShapes{"box", "cylinder", "disk", "plate", "sphere", "mesh"};
 const Keys kBoxKeys{"min", "max"};
-const Keys kCylinderKeys{"base", "axis", "radius", "length"};
+const Keys kCylinderKeys{"base", "axis", "radius", "length", "nose"};
+const Keys kNoseKinds{"flat", "hemispherical", "conical", "ogival"};
 const Keys kSphereKeys{"center", "radius"};
+const Keys kMeshKeys{"file", "mesh_unit", "origin"};
+// Units a mesh file's coordinates may be in, and metres per unit.
+const std::vector<std::pair<std::string, double>> kMeshUnits{
+    {"m", 1.0}, {"cm", 1e-2}, {"mm", 1e-3}, {"um", 1e-6}, {"in", 0.0254}};
 
 void read_box(const View& v, Vec3d& lo, Vec3d& hi) {
   lo = v.vec3("min", Dimension::Length);
@@ -639,6 +645,70 @@ void read_box(const View& v, Vec3d& lo, Vec3d& hi) {
     if (!(hi[i] > lo[i]))
       v.fail("max", "max[" + std::to_string(i) + "] = " + format_quantity(hi[i], Dimension::Length) +
                         " must be greater than min[" + std::to_string(i) + "] = " + format_quantity(lo[i], Dimension::Length));
+}
+
+// A cylinder's nose (BodySpec::nose): { kind = "conical", length = "17.3 mm", at = "base" }; `at` is the end
+// the nose replaces, "base" (the face at `base`) or "top" (base + length along the axis). The nose is part
+// of the cylinder's length.
+void read_nose(const View& n, BodySpec& body) {
+  const std::string kind = n.choice("kind", kNoseKinds);
+  if (kind == "flat") {
+    n.allow({"kind"});
+    return;
+  }
+  const std::string at = n.choice("at", {"base", "top"});
+  body.nose_at_base = at == "base";
+  const double r = body.radius;
+  if (kind == "hemispherical") {
+    n.allow({"kind", "at"});
+    body.nose = Nose::Hemispherical;
+    body.nose_length = r;
+  } else if (kind == "conical") {
+    n.allow({"kind", "at", "length"});
+    body.nose = Nose::Conical;
+    body.nose_length = n.quantity("length", Dimension::Length);
+    n.positive("length", body.nose_length, Dimension::Length);
+  } else {
+    n.allow({"kind", "at", "crh"});
+    body.nose = Nose::Ogival;
+    body.nose_crh = n.number("crh");
+    // crh = 0.5 is the hemisphere; below it the tangent ogive does not close.
+    n.range("crh", body.nose_crh, 0.5, 100, Dimension::Dimensionless, false, false,
+            "the calibre-radius-head of a tangent ogive, its radius over the diameter (0.5: a hemisphere; "
+            "projectiles use 1.5 to 6)");
+    body.nose_length = r * std::sqrt(4 * body.nose_crh - 1);
+  }
+  if (!(body.nose_length <= body.length))
+    n.fail(kind == "conical" ? "length" : "kind",
+           "the " + kind + " nose is " + format_quantity(body.nose_length, Dimension::Length) +
+               " long, longer than the cylinder (length = " + format_quantity(body.length, Dimension::Length) +
+               "), which includes its nose; lengthen the cylinder or shorten the nose");
+}
+
+// A body from a closed surface mesh: file = "nose.stl" (relative to the case file's folder), mesh_unit =
+// the unit of its coordinates (required: a CAD export carries none), origin = where the file's origin
+// lies in the case (default the case's origin). The file is read and checked here, so that `check` finds a
+// bad mesh and the message names the key.
+void read_mesh(const View& b, BodySpec& body) {
+  body.mesh_file = b.string("file", "\"nose.stl\"");
+  Keys unit_names;
+  for (const auto& [name, metres] : kMeshUnits) unit_names.push_back(name);
+  if (!b.has("mesh_unit"))
+    b.missing("mesh_unit", "a mesh file's coordinates carry no unit; give mesh_unit = one of " + join_quoted(unit_names));
+  const std::string unit = b.choice("mesh_unit", unit_names);
+  double metres = 1;
+  for (const auto& [name, m] : kMeshUnits)
+    if (name == unit) metres = m;
+  const Vec3d origin = b.has("origin") ? b.vec3("origin", Dimension::Length) : Vec3d{0, 0, 0};
+  namespace fs = std::filesystem;
+  fs::path path(body.mesh_file);
+  if (path.is_relative()) path = fs::path(b.values().reporter().file()).parent_path() / path;
+  try {
+    body.mesh = MeshSolid::read(path.string(), metres, origin);
+  } catch (const MeshError& e) {
+    b.fail("file", std::string(e.what()) + (body.mesh_file != path.string() ? " (a relative file is read from the case "
+                                                                              "file's folder)" : ""));
+  }
 }
 
 void read_velocity(const View& b, BodySpec& body) {
@@ -672,18 +742,19 @@ BodySpec read_body(const View& b, const std::vector<MaterialSpec>& materials) {
   check_name(r, b.find("name"), b.key("name"), body.name);
   const std::string shape = b.choice("shape", kShapes);
   const Keys common{"name", "material", "shape", "velocity", "direction", "variable_h", "h_min", "h_max"};
-  const bool is_box = shape == "box", is_sphere = shape == "sphere";
-  const Keys& own = is_box ? kBoxKeys : (is_sphere ? kSphereKeys : kCylinderKeys);
+  const bool is_box = shape == "box", is_sphere = shape == "sphere", is_mesh = shape == "mesh";
+  const Keys& own = is_box ? kBoxKeys : (is_sphere ? kSphereKeys : (is_mesh ? kMeshKeys : kCylinderKeys));
   Keys valid = common;
   valid.insert(valid.end(), own.begin(), own.end());
   // A key of another shape (a sphere given an axis, a box given a radius) is named as such, before the
   // generic unknown-key message of allow(), so the fix is plain.
-  const char* const own_name = is_box ? "box" : (is_sphere ? "sphere" : "cylinder");
+  const char* const own_name = is_box ? "box" : (is_sphere ? "sphere" : (is_mesh ? "mesh" : "cylinder"));
   for (const auto& [k, n] : in_file_order(b.table())) {
     if (std::find(valid.begin(), valid.end(), k) != valid.end()) continue;
     std::string owners;
     for (const auto& [other, keys] : {std::pair<const char*, const Keys*>{"box", &kBoxKeys},
-                                      {"cylinder", &kCylinderKeys}, {"sphere", &kSphereKeys}})
+                                      {"cylinder", &kCylinderKeys}, {"sphere", &kSphereKeys},
+                                      {"mesh", &kMeshKeys}})
       if (std::find(keys->begin(), keys->end(), k) != keys->end())
         owners += std::string(owners.empty() ? "a " : " or a ") + other;
     if (!owners.empty())
@@ -704,6 +775,9 @@ BodySpec read_body(const View& b, const std::vector<MaterialSpec>& materials) {
   if (is_box) {
     body.shape = Shape::Box;
     read_box(b, body.box_min, body.box_max);
+  } else if (is_mesh) {
+    body.shape = Shape::Mesh;
+    read_mesh(b, body);
   } else if (is_sphere) {
     body.shape = Shape::Sphere;
     body.center = b.vec3("center", Dimension::Length);
@@ -717,6 +791,8 @@ BodySpec read_body(const View& b, const std::vector<MaterialSpec>& materials) {
     b.positive("radius", body.radius, Dimension::Length);
     body.length = b.quantity("length", Dimension::Length);
     b.positive("length", body.length, Dimension::Length);
+    if (b.has("nose"))
+      read_nose(b.sub("nose", "the nose of a cylinder", "{ kind = \"hemispherical\", at = \"base\" }"), body);
   }
   read_velocity(b, body);
   // Variable smoothing length (X eqs 9-10): bounds as factors of the initial h (X: HMIN 0.2, HMAX 2.0).

@@ -1,6 +1,7 @@
 // CaseSpec: a case file after parsing and validation, every value in SI units. Built by case_file.cpp
 // from TOML (see docs/case-files.md for the schema), turned into particles by scene.cpp.
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,7 +19,16 @@ struct MaterialSpec {
   int line = 0;            // line of [materials.NAME] in the case file, for messages (0: unknown)
 };
 
-enum class Shape { Box, Cylinder, Sphere };
+enum class Shape { Box, Cylinder, Sphere, Mesh };
+
+class MeshSolid;  // common/mesh_solid.hpp
+
+// The end of a cylinder (a projectile's nose). Flat: the plain cylinder. The others are solids of
+// revolution of radius r(x) at the distance x from the shank (0 <= x <= nose_length): hemispherical
+// r = sqrt(R^2 - x^2), nose_length = R; conical r = R (1 - x / nose_length), a sharp tip; ogival the
+// tangent ogive of radius S = 2 crh R (crh: calibre-radius-head, S over the diameter),
+// r = sqrt(S^2 - x^2) - (S - R), nose_length = R sqrt(4 crh - 1).
+enum class Nose { Flat, Hemispherical, Conical, Ogival };
 
 struct BodySpec {
   std::string name;
@@ -30,7 +40,13 @@ struct BodySpec {
   int axis = 2;            // Cylinder: 0, 1, 2 for x, y, z
   double radius = 0;       // Cylinder, Sphere, m
   Vec3d center{0, 0, 0};   // Sphere: centre, m
-  double length = 0;       // Cylinder: extent along +axis from the base, m
+  std::string mesh_file;   // Mesh: the file as the case names it (relative to the case file's folder)
+  std::shared_ptr<const MeshSolid> mesh;  // Mesh: the closed surface, read and checked, in m in the case frame
+  double length = 0;       // Cylinder: extent along +axis from the base, m, the nose included
+  Nose nose = Nose::Flat;  // Cylinder: the shape of one end
+  bool nose_at_base = true;  // Cylinder: the nose ends the cylinder at its base (true) or at base + length
+  double nose_length = 0;  // Cylinder: m, the nose's extent along the axis (0 for a flat end)
+  double nose_crh = 0;     // Cylinder, ogival nose: calibre-radius-head, the ogive's radius over 2 radius
   Vec3d velocity{0, 0, 0}; // initial velocity, m/s
   // Variable smoothing length (X eqs 9-10): dh/dt = (1/3) h div v, kept within
   // [h_min_factor, h_max_factor] x h0 (h0 = numerics.h_factor x spacing). Off by default.

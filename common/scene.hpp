@@ -43,6 +43,9 @@ struct Scene {
 // two particles, ...).
 Scene build_scene(const CaseSpec& spec);
 
+// The volume of a body's shape as specified, m^3 (a cylinder's nose included; a mesh's enclosed volume).
+double shape_volume(const BodySpec& b);
+
 // How many copies of a body's model make the whole body: 2 for each symmetry plane that cuts its shape.
 int symmetry_multiplicity(const CaseSpec& spec, int body);
 

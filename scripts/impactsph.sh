@@ -11,9 +11,10 @@ JOBS=${JOBS:-$(nproc)}
 
 # Debian packages the build needs; installed only when one is missing. libthrust-dev (Thrust 1.17) is for
 # the gpu port's host build on a machine without the CUDA toolkit; with the toolkit, CMake takes the
-# toolkit's own Thrust (CCCL) first.
+# toolkit's own Thrust (CCCL) first. libcgal-dev reads surface meshes (STL, OBJ) and tests points against them
+# (shape = "mesh"); python3-vtk9 is VTK's own reader, with which the tests read the VTU/PVD output back.
 PACKAGES=(cmake g++ make libeigen3-dev libgsl-dev libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
-          libgtest-dev libbenchmark-dev gnuplot-nox libthrust-dev)
+          libgtest-dev libbenchmark-dev gnuplot-nox libthrust-dev libcgal-dev python3-vtk9)
 
 install_missing() {
   local missing=()

@@ -16,6 +16,7 @@
 using impactsph::CaseError;
 using impactsph::CaseSpec;
 using impactsph::parse_case_string;
+using impactsph::Nose;
 
 namespace {
 
@@ -1073,4 +1074,58 @@ bodies = ["plate", "projectile"]
   EXPECT_EQ(s.numerics.spacing_line, line_of(t, "spacing = "));
   // A value from an override has no line.
   EXPECT_EQ(parse_case_string(t, "case.toml", {}, "1 mm").numerics.spacing_line, 0);
+}
+
+// Issue 17: projectile noses on a cylinder, read with their lengths, and every bad nose named by its key.
+TEST(CaseFile, ReadsNoses) {
+  const std::string flat_end = "length = \"5 mm\"\n";
+  auto nose = [&](const std::string& table) { return with(flat_end, flat_end + "nose = " + table + "\n"); };
+  CaseSpec s = parse_case_string(kBase, "case.toml");
+  EXPECT_EQ(s.bodies[1].nose, Nose::Flat);
+  EXPECT_EQ(s.bodies[1].nose_length, 0);
+  s = parse_case_string(nose("{ kind = \"flat\" }"), "case.toml");
+  EXPECT_EQ(s.bodies[1].nose, Nose::Flat);
+  s = parse_case_string(nose("{ kind = \"hemispherical\", at = \"base\" }"), "case.toml");
+  EXPECT_EQ(s.bodies[1].nose, Nose::Hemispherical);
+  EXPECT_TRUE(s.bodies[1].nose_at_base);
+  EXPECT_DOUBLE_EQ(s.bodies[1].nose_length, 2e-3);  // the radius
+  s = parse_case_string(nose("{ kind = \"conical\", length = \"3 mm\", at = \"top\" }"), "case.toml");
+  EXPECT_EQ(s.bodies[1].nose, Nose::Conical);
+  EXPECT_FALSE(s.bodies[1].nose_at_base);
+  EXPECT_DOUBLE_EQ(s.bodies[1].nose_length, 3e-3);
+  s = parse_case_string(nose("{ kind = \"ogival\", crh = 1.5, at = \"base\" }"), "case.toml");
+  EXPECT_EQ(s.bodies[1].nose, Nose::Ogival);
+  EXPECT_DOUBLE_EQ(s.bodies[1].nose_crh, 1.5);
+  EXPECT_NEAR(s.bodies[1].nose_length, 2e-3 * std::sqrt(5.0), 1e-15);  // R sqrt(4 crh - 1)
+}
+
+TEST(CaseFileErrors, BadNoses) {
+  const std::string flat_end = "length = \"5 mm\"\n";
+  auto nose = [&](const std::string& table) { return with(flat_end, flat_end + "nose = " + table + "\n"); };
+  std::string t = nose("{ kind = \"spitzer\", at = \"base\" }");
+  expect_error(t, "bodies[1].nose.kind", "unknown kind \"spitzer\"; valid: \"flat\", \"hemispherical\", \"conical\", \"ogival\"",
+               line_of(t, "nose ="));
+  t = nose("{ kind = \"conical\", at = \"base\" }");
+  expect_error(t, "bodies[1].nose.length", "missing", -1);
+  t = nose("{ kind = \"conical\", length = \"3 mm\" }");
+  expect_error(t, "bodies[1].nose.at", "expected one of \"base\", \"top\"", -1);
+  t = nose("{ kind = \"conical\", length = \"3 mm\", at = \"front\" }");
+  expect_error(t, "bodies[1].nose.at", "unknown at \"front\"", -1);
+  t = nose("{ kind = \"conical\", length = \"6 mm\", at = \"base\" }");
+  expect_error(t, "bodies[1].nose.length", "nose is 6 mm long, longer than the cylinder (length = 5 mm)", -1);
+  t = nose("{ kind = \"conical\", length = \"3 m/s\", at = \"base\" }");
+  expect_error(t, "bodies[1].nose.length", "is a velocity; expected a length", -1);
+  t = nose("{ kind = \"ogival\", crh = 0.3, at = \"base\" }");
+  expect_error(t, "bodies[1].nose.crh", "must be at least 0.5", -1);
+  t = nose("{ kind = \"ogival\", crh = 3, at = \"base\" }");  // 2 mm x sqrt(11) = 6.6 mm > 5 mm
+  expect_error(t, "bodies[1].nose.kind", "the ogival nose is 6.63", -1);
+  t = nose("{ kind = \"hemispherical\", length = \"2 mm\", at = \"base\" }");
+  expect_error(t, "bodies[1].nose.length", "unknown key \"length\"", -1);
+  t = nose("{ kind = \"flat\", at = \"base\" }");
+  expect_error(t, "bodies[1].nose.at", "unknown key \"at\"", -1);
+  t = nose("\"conical\"");
+  expect_error(t, "bodies[1].nose", "expected a table such as { kind = \"hemispherical\", at = \"base\" }", -1);
+  // A box has no nose.
+  t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]", "max = [\"10 mm\", \"10 mm\", \"2 mm\"]\nnose = { kind = \"flat\" }");
+  expect_error(t, "bodies[0].nose", "\"nose\" is a key of a cylinder, not of a box", -1);
 }

@@ -865,3 +865,124 @@ TEST(Scene, ContactsBuiltInCodeAreResolved) {
   EXPECT_EQ(e.key(), "contacts[0].bodies");
   EXPECT_TRUE(Contains(e.what(), "no body named \"anvil\""));
 }
+
+namespace {
+
+// The nose profile written out here on its own (not the scene builder's): radius at the distance t from
+// the base of a cylinder of radius r, length len, nose of length ln at the base or the top.
+double profile_radius(const BodySpec& b, double t) {
+  const double x = b.nose_at_base ? b.nose_length - t : t - (b.length - b.nose_length);
+  if (x <= 0) return b.radius;
+  if (x >= b.nose_length) return 0;
+  switch (b.nose) {
+    case Nose::Hemispherical: return std::sqrt(b.radius * b.radius - x * x);
+    case Nose::Conical: return b.radius * (1 - x / b.nose_length);
+    case Nose::Ogival: {
+      const double s = 2 * b.nose_crh * b.radius;
+      return std::sqrt(s * s - x * x) - (s - b.radius);
+    }
+    default: return b.radius;
+  }
+}
+
+BodySpec nosed(const std::string& name, Nose nose, bool at_base, double nose_length, double crh) {
+  const double mm = 1e-3;
+  BodySpec b = cylinder(name, {0, 0, 0}, 2, 10 * mm, 80 * mm);
+  b.nose = nose;
+  b.nose_at_base = at_base;
+  b.nose_length = nose_length;
+  b.nose_crh = crh;
+  return b;
+}
+
+}  // namespace
+
+// Issue 17: a cylinder with a hemispherical, conical or ogival nose holds the closed-form mass and centre
+// of mass at 16 particles across its diameter (the issue asks 0.5 %). Volume and centre are integrated
+// here by Simpson's rule over the profile (for the hemisphere and the cone also checked against 2/3 pi R^3
+// and pi R^2 L / 3); the lattice's cells before the mass scale must hold the volume within 0.5 %, the
+// masses then give rho0 V, the centre lies on the axis and its distance from the base is within 0.5 % of
+// the closed form; every particle lies within the profile. The same with the two symmetry planes of a
+// quarter model.
+TEST(Scene, NosesHoldTheirClosedFormMassAndCentre) {
+  const double mm = 1e-3, pi = Constants<double>::pi, r = 10 * mm;
+  const BodySpec noses[] = {
+      nosed("hemispherical", Nose::Hemispherical, true, r, 0),
+      nosed("conical", Nose::Conical, false, 20 * mm, 0),
+      nosed("ogival-3", Nose::Ogival, true, r * std::sqrt(11.0), 3),
+      nosed("ogival-1.5", Nose::Ogival, false, r * std::sqrt(5.0), 1.5),
+  };
+  for (const bool quarter : {false, true})
+    for (const BodySpec& b : noses) {
+      SCOPED_TRACE(b.name + (quarter ? " (quarter)" : ""));
+      const int steps = 200000;  // Simpson's rule, error far below the tolerance
+      double volume = 0, moment = 0;
+      for (int i = 0; i <= steps; ++i) {
+        const double t = b.length * i / steps;
+        const double w = (i == 0 || i == steps) ? 1 : (i % 2 ? 4 : 2);
+        const double rt = profile_radius(b, t), area = pi * rt * rt;
+        volume += w * area;
+        moment += w * area * t;
+      }
+      volume *= b.length / (3.0 * steps);
+      moment *= b.length / (3.0 * steps);
+      const double centre = moment / volume;  // m from the base
+      if (b.nose == Nose::Hemispherical) {
+        EXPECT_NEAR(volume, pi * r * r * (b.length - r) + 2.0 / 3.0 * pi * r * r * r, 1e-7 * volume);
+      }
+      if (b.nose == Nose::Conical) {
+        EXPECT_NEAR(volume, pi * r * r * (b.length - b.nose_length) + pi * r * r * b.nose_length / 3, 1e-7 * volume);
+      }
+
+      CaseSpec s = spec_with_spacing(2 * r / 16);
+      s.bodies.push_back(b);
+      if (quarter) {
+        s.symmetry.push_back({0, 0.0});
+        s.symmetry.push_back({1, 0.0});
+      }
+      const Scene scene = build_scene(s);
+      const BodyInfo& info = scene.bodies[0];
+      const ParticleSet& p = scene.particles;
+      EXPECT_NEAR(info.specified_mass, kRho * volume, 1e-6 * kRho * volume);
+      EXPECT_NEAR(info.generated_mass, kRho * volume, 1e-9 * kRho * volume);
+      // Cells against the closed-form volume: the mass scale is what the lattice missed.
+      EXPECT_NEAR(1 / info.mass_scale, 1, 0.005);
+      double mass = 0;
+      Vec3d first{0, 0, 0};
+      for (std::size_t i = 0; i < p.size(); ++i) {
+        mass += p.mass[i];
+        first += p.mass[i] * p.pos[i];
+        const double t = p.pos[i].z - b.base.z;
+        EXPECT_LE(std::hypot(p.pos[i].x, p.pos[i].y), profile_radius(b, t) * (1 + 1e-9) + 1e-15);
+      }
+      const Vec3d cm = first * (1 / mass);
+      if (!quarter) {
+        EXPECT_NEAR(cm.x, 0, 1e-9 * mm);
+        EXPECT_NEAR(cm.y, 0, 1e-9 * mm);
+      }
+      EXPECT_NEAR(cm.z - b.base.z, centre, 0.005 * centre);
+      // Its sizes: the length to within half a spacing (a sharp tip's last layers may hold no point; a
+      // warning says so), the shank's diameter exact.
+      for (const BodySize& size : info.sizes) {
+        SCOPED_TRACE(size.name);
+        if (size.name == "diameter") {
+          EXPECT_NEAR(size.generated, 2 * r, 1e-9 * r);
+        }
+        if (size.name == "length") {
+          EXPECT_LE(size.generated, b.length * (1 + 1e-12));
+        }
+      }
+    }
+}
+
+// A nose whose lattice misses its volume by more than 1 % (a nose a few spacings long) is warned of, and
+// the warning says by how much the masses were scaled.
+TEST(Scene, CoarseNoseIsWarnedOf) {
+  const double mm = 1e-3;
+  BodySpec b = nosed("cone", Nose::Conical, true, 20 * mm, 0);
+  CaseSpec s = spec_with_spacing(5 * mm);  // 4 particles across
+  s.bodies.push_back(b);
+  const Scene scene = build_scene(s);
+  EXPECT_TRUE(AnyContains(scene.bodies[0].warnings, "of its volume with the nose; its particle masses are scaled by"));
+  EXPECT_NEAR(scene.bodies[0].generated_mass, scene.bodies[0].specified_mass, 1e-9 * scene.bodies[0].specified_mass);
+}
