@@ -24,14 +24,15 @@
 #include <thread>
 
 #include "app/gnuplot.hpp"
+#include "app/picture.hpp"
 #include "app/run_args.hpp"
 #include "app/scoped_signals.hpp"
 #include "common/case_file.hpp"
 #include "common/checkpoint.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
-#include "common/output.hpp"
 #include "common/mesh_solid.hpp"
+#include "common/output.hpp"
 #include "common/scene.hpp"
 #include "common/units.hpp"
 #include "reference/solver.hpp"
@@ -251,6 +252,7 @@ struct Run {
   std::string error;
   CaseObservables obs;
   double wall = 0;  // s, summary.json's wall_time_s (a failed run: its scene build and run)
+  std::string picture_error;  // why its picture files could not be written
 };
 
 struct Search {
@@ -337,6 +339,14 @@ Run run_one(const Search& s, double v, int threads) {
     for (const std::string& x : sets) ro.command_line.insert(ro.command_line.end(), {"--set", x});
     ro.command_line.insert(ro.command_line.end(), {"--out", r.dir.string()});
     const RunResult res = run_simulation(scene, solver, ro);
+    // The picture's data and script; the report draws those of its key runs, one after another.
+    if (!res.interrupted && spec.output.picture) {
+      try {
+        write_picture_files(r.dir, "picture", scene, scene.particles, res.clock.time, spec.output.picture_field);
+      } catch (const std::exception& e) {
+        r.picture_error = e.what();
+      }
+    }
     r.obs = res.observables;
     r.done = !res.interrupted;
     r.wall = res.wall_seconds;  // as summary.json records it, with the time of the run it continues
@@ -464,10 +474,10 @@ void write_results(const Search& s, const Outcome& o) {
 
   nlohmann::json j;
   j["case"] = s.spec.name;
-  j["case_file"] = fs::absolute(s.opt.case_file).string();
+  j["case_file"] = report_path(s.opt.case_file);
   j["spacing_m"] = s.spec.numerics.spacing;
   j["set"] = s.opt.sets;
-  j["command_line"] = s.opt.command_line;
+  j["command_line"] = report_arguments(s.opt.command_line);
   j["from_m_s"] = s.v_from;
   j["to_m_s"] = s.v_to;
   j["tolerance_m_s"] = s.tolerance;
@@ -536,8 +546,7 @@ std::string plot_script(const Search& s, const Outcome& o, const fs::path& png) 
   y_max *= 1.1;
 
   std::ostringstream g;
-  g << "# Drawn by impactsph ballistic-limit; run `gnuplot " << (s.out / "ballistic_curve.gp").string()
-    << "` to redraw.\n";
+  g << "# Drawn by impactsph ballistic-limit; run `gnuplot ballistic_curve.gp` in this folder to redraw.\n";
   g << "set terminal pngcairo size 900,600 enhanced font 'Sans,11'\n";
   g << "set output " << gp_quote(png.string()) << "\n";
   char title[256];
@@ -619,6 +628,86 @@ std::string plot_script(const Search& s, const Outcome& o, const fs::path& png) 
 std::string draw_plot(const Search& s, const Outcome& o) {
   return draw_gnuplot(s.out / "ballistic_curve.png", s.out / "ballistic_curve.gp",
                       [&](const fs::path& png) { return plot_script(s, o, png); });
+}
+
+// DIR/report.md: the figures of the search, its plot, its runs, and the pictures at the end of its key
+// runs (the two that bracket the limit and the fastest), drawn here one after another.
+void write_report(const Search& s, const Outcome& o, const std::string& plot_error) {
+  auto num = [](const char* f, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, v);
+    return std::string(buf);
+  };
+  const std::vector<const Run*> runs = sorted_done(s);
+  std::ostringstream md;
+  md << "# Ballistic limit: " << s.spec.name << "\n\n"
+     << "Written by `" << report_command(s.opt.command_line) << "`; the figures are also in ballistic.json and "
+     << "ballistic.csv, each run in its folder v_SPEED/.\n\n"
+     << "| | |\n|---|---|\n"
+     << "| case | `" << report_path(s.opt.case_file) << "` at spacing "
+     << format_quantity(s.spec.numerics.spacing, Dimension::Length) << " |\n"
+     << "| status | " << o.status << " |\n";
+  if (o.bracketed)
+    md << "| bracket | not perforated at " << speed_text(o.lo) << " m/s, perforated at " << speed_text(o.hi)
+       << " m/s (" << runs.size() << " runs) |\n"
+       << "| ballistic limit | " << num("%.1f", o.limit()) << " m/s |\n";
+  if (o.fit.ok)
+    md << "| Recht-Ipson, v_bl fixed | a = " << num("%.4f", o.fit.curve.a) << ", p = " << num("%.3f", o.fit.curve.p)
+       << ", rms residual " << num("%.2f", o.fit.rms) << " m/s over " << o.fit.points << " perforating runs |\n";
+  if (o.fit_free.ok)
+    md << "| Recht-Ipson, all free | a = " << num("%.4f", o.fit_free.curve.a) << ", p = "
+       << num("%.3f", o.fit_free.curve.p) << ", v_bl = " << num("%.1f", o.fit_free.curve.v_bl) << " m/s"
+       << (o.fit_free.message.empty() ? "" : " (" + o.fit_free.message + ")") << " |\n";
+  if (o.reference_curve)
+    md << "| reference | v_bl = " << num("%.1f", o.reference_v_bl) << " m/s (" << o.reference_v_bl_from
+       << "), simulated limit " << num("%+.1f", 100 * (o.limit() - o.reference_v_bl) / o.reference_v_bl) << " % |\n";
+  md << "\n"
+     << (plot_error.empty() ? "![residual velocity against impact velocity](ballistic_curve.png)\n"
+                            : "The plot was not drawn: " + plot_error + "\n")
+     << "\n| impact velocity [m/s] | perforated | residual velocity [m/s] | plug mass [g] | plug velocity [m/s] | "
+        "settled at [us] | wall [s] |\n|---|---|---|---|---|---|---|\n";
+  for (const Run* r : runs)
+    md << "| " << speed_text(r->v) << " | " << (r->obs.perforated ? "yes" : "no") << " | "
+       << num("%.1f", r->obs.residual_velocity) << " | " << num("%.2f", r->obs.plug_mass * 1e3) << " | "
+       << num("%.1f", r->obs.plug_velocity) << " | "
+       << (r->obs.settled_time >= 0 ? num("%.1f", r->obs.settled_time * 1e6) : std::string("not settled")) << " | "
+       << num("%.1f", r->wall) << " |\n";
+
+  std::vector<std::pair<const Run*, std::string>> key;
+  auto add_key = [&](const Run* r, const std::string& why) {
+    if (!r) return;
+    for (auto& k : key)
+      if (k.first == r) {
+        k.second += "; " + why;
+        return;
+      }
+    key.emplace_back(r, why);
+  };
+  auto at = [&](double v) -> const Run* {
+    for (const Run* r : runs)
+      if (r->v == v) return r;
+    return nullptr;
+  };
+  if (o.bracketed) {
+    add_key(at(o.lo), "the fastest that did not perforate");
+    add_key(at(o.hi), "the slowest that perforated");
+  }
+  if (!runs.empty()) add_key(runs.back(), "the fastest run");
+  if (!key.empty() && s.spec.output.picture) {
+    md << "\n## The key runs at their end\n\nA cut through the model coloured by "
+       << picture_field_label(s.spec.output.picture_field)
+       << " (docs/case-files.md, `[output]`); each run folder holds picture.gp and picture.dat to redraw it.\n";
+    for (const auto& [r, why] : key) {
+      const std::string name = r->dir.filename().string();
+      const std::string error = r->picture_error.empty() ? draw_picture(r->dir, "picture") : r->picture_error;
+      md << "\n### " << speed_text(r->v) << " m/s: " << why << "\n\n";
+      if (error.empty())
+        md << "![" << speed_text(r->v) << " m/s at its end](" << name << "/picture.png)\n";
+      else
+        md << "Not drawn: " << error << "\n";
+    }
+  }
+  write_text_atomic(s.out / "report.md", md.str());
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -1009,11 +1098,12 @@ int ballistic_limit_command(const BallisticOptions& opt) {
                 unsettled, done_runs, end_us);
 
   const std::string plot_error = draw_plot(s, o);
+  write_report(s, o, plot_error);
   if (!plot_error.empty()) {
     std::fprintf(stderr, "error: %s\n", plot_error.c_str());
     return 1;
   }
-  std::printf("results: %s (ballistic.csv, ballistic.json, ballistic_curve.png, v_*/)\n", s.out.string().c_str());
+  std::printf("results: %s (report.md, ballistic.csv, ballistic.json, ballistic_curve.png, v_*/)\n", s.out.string().c_str());
   return interrupted ? 130 : 0;
 }
 

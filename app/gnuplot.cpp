@@ -38,14 +38,14 @@ bool on_path(const std::string& program) {
   return false;
 }
 
-std::string draw_gnuplot(const fs::path& png, const fs::path& gp_file,
-                         const std::function<std::string(const fs::path&)>& script_for) {
-  write_text_atomic(gp_file, script_for(png));
+std::string run_gnuplot(const fs::path& png, const std::function<std::string(const fs::path&)>& script_for) {
   if (!on_path("gnuplot"))
     return "gnuplot is not installed, so " + png.string() + " was not drawn. Install it with `sudo apt-get install "
-           "gnuplot-nox`, then draw the plot with `gnuplot " + gp_file.string() + "`";
-  const fs::path tmp = png.parent_path() / (png.filename().string() + ".tmp-" + std::to_string(getpid()));
-  const std::string script = script_for(tmp);
+           "gnuplot-nox`";
+  const fs::path dir = png.parent_path().empty() ? fs::path(".") : png.parent_path();
+  const fs::path tmp_name = png.filename().string() + ".tmp-" + std::to_string(getpid());
+  const fs::path tmp = dir / tmp_name;
+  const std::string script = "cd " + gp_quote(fs::absolute(dir).string()) + "\n" + script_for(tmp_name);
   void (*old_pipe)(int) = std::signal(SIGPIPE, SIG_IGN);  // gnuplot dying must not kill us mid-write
   FILE* pipe = popen("gnuplot", "w");
   if (!pipe) {
@@ -60,10 +60,19 @@ std::string draw_gnuplot(const fs::path& png, const fs::path& gp_file,
     fs::remove(tmp, ec);
     return "gnuplot failed (" + (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
                                                    : std::string("killed")) +
-           ") drawing " + png.string() + "; its messages are above. The script is " + gp_file.string();
+           ") drawing " + png.string() + "; its messages are above";
   }
   fs::rename(tmp, png);
   return "";
+}
+
+std::string draw_gnuplot(const fs::path& png, const fs::path& gp_file,
+                         const std::function<std::string(const fs::path&)>& script_for) {
+  write_text_atomic(gp_file, script_for(png.filename()));
+  const std::string error = run_gnuplot(png, script_for);
+  if (error.empty()) return "";
+  return error + ". The script is " + gp_file.string() + " (redraw it with `gnuplot " + gp_file.filename().string() +
+         "` in its folder)";
 }
 
 }  // namespace impactsph

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "app/ballistic_limit.hpp"
+#include "app/picture.hpp"
 #include "app/run_args.hpp"
 #include "app/sweep.hpp"
 #include "app/verify.hpp"
@@ -212,7 +213,15 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
     std::printf("plug_velocity: %.2f m/s\nplug_mass: %.2f g\nperforated: %s\n", o.plug_velocity, o.plug_mass * 1e3,
                 o.perforated ? "yes" : "no");
   if (o.target) std::printf("damage_fraction: %.4f\n", o.damage_fraction);
-  std::printf("results: %s (summary.json, history_*.csv, particles.pvd)\n", opt.out_dir.string().c_str());
+  bool picture = false;
+  if (scene.spec.output.picture) {
+    const std::string warning = write_and_draw_picture(opt.out_dir, "picture", scene, scene.particles, r.clock.time,
+                                                       scene.spec.output.picture_field);
+    if (!warning.empty()) std::fprintf(stderr, "warning: %s\n", warning.c_str());
+    picture = warning.empty();
+  }
+  std::printf("results: %s (summary.json, history_*.csv, particles.pvd%s)\n", opt.out_dir.string().c_str(),
+              picture ? ", picture.png" : "");
   return 0;
 }
 

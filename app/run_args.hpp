@@ -19,4 +19,17 @@ nlohmann::json read_json_or_null(const std::filesystem::path& file);
 std::string run_fingerprint(const std::string& case_file, const std::string& spacing,
                             const std::vector<std::string>& sets);
 
+// A path as a report shows it, naming no folder of the machine it ran on: a relative path as given; an
+// absolute one relative to the source tree's root when inside it, else relative to the current folder
+// when inside that, else ".../" and its file name.
+std::string report_path(const std::filesystem::path& path);
+
+// The words of a command line as a report shows them: the program as `impactsph` when it was called by an
+// absolute path, each absolute path among the arguments (also the value of KEY=/path) as report_path
+// shows it.
+std::vector<std::string> report_arguments(const std::vector<std::string>& argv);
+
+// report_arguments joined by spaces, those with spaces or shell characters in single quotes.
+std::string report_command(const std::vector<std::string>& argv);
+
 }  // namespace impactsph

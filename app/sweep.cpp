@@ -576,7 +576,7 @@ std::string write_table(const SweepSpec& spec, const fs::path& out, const std::v
     for (const std::string& x : c) md += " " + x + " |";
     md += "\n";
   }
-  std::string doc = "# Sweep " + spec.name + "\n\nSweep file `" + spec.file + "`, case `" + spec.case_file +
+  std::string doc = "# Sweep " + spec.name + "\n\nSweep file `" + report_path(spec.file) + "`, case `" + report_path(spec.case_file) +
                     "`, " + std::to_string(rows.size()) + " runs. Written by `impactsph sweep`; the same table is in "
                     "sweep.csv. Observables in SI units; particle_steps_per_s is particles x steps / wall time of "
                     "the whole run (restarts included).\n\n" + md;

@@ -21,6 +21,8 @@
 
 #include "app/ballistic_limit.hpp"
 #include "app/gnuplot.hpp"
+#include "app/picture.hpp"
+#include "app/run_args.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
 #include "common/output.hpp"
@@ -90,7 +92,19 @@ struct Report {
   std::vector<Skip> skipped;
   std::vector<std::string> sections;  // Markdown of the CFL study and remarks
   int failures = 0;
+  fs::path dir;  // the report folder
+  struct Picture {
+    std::string what, stem, error;  // error: why DIR/STEM.png was not drawn
+  };
+  std::vector<Picture> pictures;  // one per case: its finest run at its end
 };
+
+// A look at a run's end that draws its picture (app/picture.hpp) into the report folder as STEM.png.
+verification::AtEnd picture_at_end(Report& r, const std::string& what, const std::string& stem, PictureField field) {
+  return [&r, what, stem, field](const Scene& scene, double time) {
+    r.pictures.push_back({what, stem, write_and_draw_picture(r.dir, stem, scene, scene.particles, time, field)});
+  };
+}
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -199,7 +213,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 // measure_elastic_wave. Stops at the end time, or after `max_steps` steps when that is positive.
 SideBySide side_by_side(const std::string& what, const std::string& file, const std::string& h,
                         const std::vector<std::string>& sets, const std::vector<gpu::Precision>& precisions,
-                        bool wave, long max_steps) {
+                        bool wave, long max_steps, const verification::AtEnd& at_end = {}) {
   struct Live {
     Scene scene;
     std::unique_ptr<Stepper> solver;
@@ -262,6 +276,7 @@ SideBySide side_by_side(const std::string& what, const std::string& file, const 
     if (k == 0) r.ref = l.side;
     else r.ports.push_back(l.side);
   }
+  if (at_end) at_end(ref.scene, t);
   return r;
 }
 
@@ -312,7 +327,11 @@ void elastic_wave(Report& r, const std::string& cases, const std::string& suite)
           side_by_side("elastic wave", file, h, {"output.vtu=false"},
                        port ? std::vector<gpu::Precision>{gpu::Precision::Double, gpu::Precision::Float}
                             : std::vector<gpu::Precision>{},
-                       true, 0);
+                       true, 0,
+                       std::string(h) == spacings.back()
+                           ? picture_at_end(r, std::string("elastic wave at ") + h, "picture_elastic_wave",
+                                            PictureField::Speed)
+                           : verification::AtEnd{});
       wave_points(r, sb.ref);
       for (const Side& s : sb.ports) wave_points(r, s);
       if (port) r.cross.push_back(sb);
@@ -348,7 +367,11 @@ void hugoniot(Report& r, const std::string& cases, double speed) {
   // particles across.
   for (const char* h : {"0.5 mm", "0.25 mm", "0.125 mm", "0.1 mm"}) {
     try {
-      const verification::HugoniotMeasure m = verification::measure_hugoniot(file, h, speed);
+      const verification::HugoniotMeasure m = verification::measure_hugoniot(
+          file, h, speed,
+          speed == 1000 && std::string(h) == "0.1 mm"
+              ? picture_at_end(r, tag + " at " + h, "picture_hugoniot", PictureField::Pressure)
+              : verification::AtEnd{});
       r.errors.push_back({tag + ": shock pressure", m.cost.spacing, m.pressure_error(), m.cost});
       r.errors.push_back({tag + ": shock speed", m.cost.spacing, m.us_error(), m.cost});
       progress(tag, m.cost, "P " + fmt("%+.2f %%", 100 * m.pressure_error()) + ", Us " + fmt("%+.2f %%", 100 * m.us_error()));
@@ -377,7 +400,10 @@ void taylor_bar(Report& r, const std::string& cases, const fs::path& runs, std::
   for (const char* h : {"1.27 mm", "0.8467 mm", "0.635 mm", "0.508 mm"}) {
     try {
       const verification::ObservableRun o = verification::run_observables(
-          file, h, {"output.vtu=false"}, (runs / ("taylor-bar-" + std::string(h))).string());
+          file, h, {"output.vtu=false"}, (runs / ("taylor-bar-" + std::string(h))).string(),
+          std::string(h) == "0.508 mm"
+              ? picture_at_end(r, std::string("Taylor bar at ") + h, "picture_taylor_bar", PictureField::PlasticStrain)
+              : verification::AtEnd{});
       r.observables.push_back({"Taylor bar: final length", o.cost.spacing, o.observables.final_length, o.cost});
       r.observables.push_back({"Taylor bar: impact-face diameter", o.cost.spacing, o.observables.impact_face_diameter, o.cost});
       progress("Taylor bar", o.cost,
@@ -406,7 +432,11 @@ void plate(Report& r, const std::string& cases, const fs::path& runs, std::vecto
   for (const char* h : {"4 mm", "2 mm", "1.6 mm", "1.3333333 mm"}) {
     try {
       const verification::ObservableRun o = verification::run_observables(
-          file, h, {"output.vtu=false", v}, (runs / ("plate-8mm-" + std::string(h))).string());
+          file, h, {"output.vtu=false", v}, (runs / ("plate-8mm-" + std::string(h))).string(),
+          std::string(h) == "1.3333333 mm"
+              ? picture_at_end(r, std::string("8 mm plate at 298 m/s, ") + h, "picture_plate_8mm",
+                               PictureField::PlasticStrain)
+              : verification::AtEnd{});
       r.observables.push_back({"8 mm plate at 298 m/s: residual velocity", o.cost.spacing, o.observables.residual_velocity, o.cost});
       progress("8 mm plate, 298 m/s", o.cost, "v_r " + fmt("%.2f m/s", o.observables.residual_velocity) +
                                                   (o.observables.settled_time < 0 ? " (not settled)" : ""));
@@ -431,8 +461,7 @@ const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
 
 std::string header(const fs::path& png, const std::string& title, const std::string& xlabel, const std::string& ylabel) {
   std::ostringstream g;
-  g << "# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the\n"
-    << "# output path below is relative to it).\n"
+  g << "# Drawn by impactsph verify; to redraw, run gnuplot on this file in its folder.\n"
     << "set terminal pngcairo size 1000,750 enhanced font 'Sans,11'\n"
     << "set output " << gp_quote(png.string()) << "\n"
     << "set title " << gp_quote(title) << " noenhanced\n"
@@ -673,6 +702,7 @@ int verify_command(const VerifyOptions& opt) {
   std::fflush(stdout);
 
   Report r;
+  r.dir = out;
   std::vector<Cfl> cfl;
   const bool smoke = opt.suite == "smoke";
   elastic_wave(r, cases, opt.suite);
@@ -728,9 +758,7 @@ int verify_command(const VerifyOptions& opt) {
   // report.md
   std::ostringstream md;
   md << "# Verification report (" << opt.suite << " suite)\n\n"
-     << "Written by `";
-  for (std::size_t k = 0; k < opt.command_line.size(); ++k) md << (k ? " " : "") << opt.command_line[k];
-  md << "`.\n\n"
+     << "Written by `" << report_command(opt.command_line) << "`.\n\n"
      << "| | |\n|---|---|\n"
      << "| date | " << started << " |\n"
      << "| git commit (at the start) | " << commit << " |\n"
@@ -800,6 +828,16 @@ int verify_command(const VerifyOptions& opt) {
          << " | " << (std::abs(change) < 0.01 ? "yes" : "**no**") << " |\n";
     }
     md << "\n";
+  }
+  if (!r.pictures.empty()) {
+    md << "## The finest run of each case at its end\n\n"
+       << "As `impactsph run` draws it (picture.png: a cut through the model, docs/case-files.md `[output]`), "
+          "coloured by the speed (elastic wave), the pressure (Hugoniot) or the plastic strain; each PNG has its "
+          "gnuplot script and data beside it.\n\n";
+    for (const Report::Picture& p : r.pictures) {
+      if (p.error.empty()) md << "![" << p.what << "](" << p.stem << ".png)\n\n";
+      else md << "- " << p.what << ": not drawn: " << p.error << "\n\n";
+    }
   }
   md << "## Skipped\n\n";
   if (r.skipped.empty()) md << "Nothing was skipped.\n";

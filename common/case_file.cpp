@@ -962,6 +962,9 @@ void read_contacts(const View& root, CaseSpec& spec) {
 // ---------------------------------------------------------------------------------------------------
 // Case, numerics, time, output
 
+// output.picture_field, in the order of enum PictureField.
+const Keys kPictureFields{"plastic_strain", "damage", "speed", "pressure"};
+
 void read_numerics(const View& root, NumericsSpec& num) {
   const View n = root.sub("numerics", "[numerics]", "[numerics] with spacing = \"0.5 mm\"");
   n.allow({"spacing", "kernel", "h_factor", "viscosity_linear", "viscosity_quadratic", "viscosity_balsara",
@@ -1070,9 +1073,19 @@ CaseSpec read_case(const toml::table& tree, const Reporter& r) {
   if (const toml::node* n = root.find("output")) {
     if (!n->is_table()) root.fail("output", "expected a table such as [output] with vtu = true, not " + type_name(*n));
     const View o(r, *n->as_table(), "output", "[output]");
-    o.allow({"vtu", "csv"});
+    o.allow({"vtu", "csv", "picture", "picture_field"});
     spec.output.vtu = o.boolean_or("vtu", true);
     spec.output.csv = o.boolean_or("csv", true);
+    spec.output.picture = o.boolean_or("picture", true);
+    const std::string field = o.choice("picture_field", kPictureFields, "plastic_strain");
+    spec.output.picture_field = static_cast<PictureField>(
+        std::find(kPictureFields.begin(), kPictureFields.end(), field) - kPictureFields.begin());
+    if (spec.output.picture_field == PictureField::Damage &&
+        std::none_of(spec.materials.begin(), spec.materials.end(),
+                     [](const MaterialSpec& m) { return m.params.damage.kind != DamageKind::None; }))
+      o.fail("picture_field", "\"damage\" needs a material with a damage model ([materials.NAME] damage = { kind = "
+                              "... }) and no material of this case has one; valid here: \"plastic_strain\", "
+                              "\"speed\", \"pressure\"");
   }
   return spec;
 }

@@ -119,9 +119,14 @@ struct ObservablesSpec {
   double settle_tolerance = 1.0;    // m/s over the last settle_window
 };
 
+// What the picture at the end of a run (app/picture.hpp) is coloured by.
+enum class PictureField { PlasticStrain, Damage, Speed, Pressure };
+
 struct OutputSpec {
   bool vtu = true;
   bool csv = true;
+  bool picture = true;  // picture.png of a cut through the model after the last frame
+  PictureField picture_field = PictureField::PlasticStrain;
 };
 
 struct CaseSpec {

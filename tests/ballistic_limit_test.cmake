@@ -1,6 +1,7 @@
 # `impactsph ballistic-limit` end to end on the 8 mm plate at a coarse spacing and a short end time
 # (about 20 s on two cores): 50 m/s must stop and 600 m/s perforate by 40 us, so the search runs both
-# ends and two rounds of two. Checks the result lines, ballistic.csv, ballistic.json and the PNG.
+# ends and two rounds of two. Checks the result lines, ballistic.csv, ballistic.json, the PNG and
+# report.md with the pictures of the key runs (the fastest, 600 m/s, among them).
 # Needs gnuplot (Debian: gnuplot-nox, installed by scripts/impactsph.sh).
 file(REMOVE_RECURSE ${OUT})
 execute_process(COMMAND ${EXE} ballistic-limit ${CASE} --from 50 --to 600 --tolerance 100 --jobs 2
@@ -55,7 +56,23 @@ foreach(v 50 600)
     message(FATAL_ERROR "the run at ${v} m/s left no v_${v}/summary.json")
   endif()
 endforeach()
-file(GLOB leftovers ${OUT}/*.tmp-*)
+file(READ ${OUT}/report.md report)
+foreach(expect "# Ballistic limit: plate-8mm\n" "Written by `impactsph ballistic-limit " "| ballistic limit | "
+        "![residual velocity against impact velocity](ballistic_curve.png)"
+        "### 600 m/s: the fastest run\n\n![600 m/s at its end](v_600/picture.png)")
+  string(FIND "${report}" "${expect}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "report.md lacks '${expect}':\n${report}")
+  endif()
+endforeach()
+string(FIND "${report}" "${OUT}" at)
+if(NOT at EQUAL -1)
+  message(FATAL_ERROR "report.md names the absolute path ${OUT}:\n${report}")
+endif()
+if(NOT EXISTS ${OUT}/v_600/picture.png OR EXISTS ${OUT}/v_50/picture.png AND NOT report MATCHES "v_50/picture.png")
+  message(FATAL_ERROR "the pictures drawn do not match the key runs of report.md")
+endif()
+file(GLOB leftovers ${OUT}/*.tmp-* ${OUT}/v_*/*.tmp-*)
 if(leftovers)
   message(FATAL_ERROR "temporary files left behind: ${leftovers}")
 endif()

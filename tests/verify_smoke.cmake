@@ -1,6 +1,7 @@
 # `impactsph verify --suite smoke` (the elastic wave at 2, 1 and 0.8 mm with the reference, and at 2 mm
 # with the gpu port beside it in double and float; about 10 s on one core): the report, its tables, the
-# fitted order, results.csv, crosscheck.csv and the two PNGs. The figures themselves are checked by the
+# fitted order, results.csv, crosscheck.csv, the two PNGs and the picture of the finest run, and that the
+# report names no absolute path. The figures themselves are checked by the
 # analytic and crosscheck tests; here the velocity-profile error must fall with the spacing (a positive
 # order), and the section "CPU against GPU port" must hold the tolerances of the crosscheck CTests:
 # double fields within 1e-9, the float elastic-wave observables within 0.5 %. Needs gnuplot.
@@ -11,7 +12,8 @@ execute_process(COMMAND ${EXE} verify --suite smoke --threads 1 --out ${OUT}
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "impactsph verify failed (${rc}):\n${out}\n${err}")
 endif()
-foreach(f report.md results.csv crosscheck.csv convergence.png convergence.gp speed_vs_error.png speed_vs_error.gp)
+foreach(f report.md results.csv crosscheck.csv convergence.png convergence.gp speed_vs_error.png speed_vs_error.gp
+        picture_elastic_wave.png picture_elastic_wave.gp picture_elastic_wave.dat)
   if(NOT EXISTS ${OUT}/${f})
     message(FATAL_ERROR "verify did not write ${f}")
   endif()
@@ -19,12 +21,18 @@ endforeach()
 file(READ ${OUT}/report.md report)
 foreach(expect "| CPU | " "| threads per run | 1 " "| git commit (at the start) | " "| date | 20"
         "## Skipped\n" "![error against spacing](convergence.png)" "## CPU against GPU port\n"
-        "![wall time against error](speed_vs_error.png)")
+        "![wall time against error](speed_vs_error.png)" "![elastic wave at 0.8 mm](picture_elastic_wave.png)"
+        "Written by `impactsph verify --suite smoke --threads 1 --out ")
   string(FIND "${report}" "${expect}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "report.md lacks '${expect}':\n${report}")
   endif()
 endforeach()
+# The report names no folder of this machine: the program by its name, the output folder relative.
+string(FIND "${report}" "${OUT}" at)
+if(NOT at EQUAL -1)
+  message(FATAL_ERROR "report.md names the absolute path ${OUT}:\n${report}")
+endif()
 if(NOT report MATCHES "\n\\| elastic wave: velocity profile L1 \\| ([0-9]+\\.[0-9]+) \\| [0-9.]+ \\| 3 \\|\n")
   message(FATAL_ERROR "report.md has no positive fitted order of the velocity-profile error over 3 points:\n${report}")
 endif()

@@ -88,7 +88,8 @@ ElasticWaveMeasure measure_elastic_wave(const std::string& case_file, const std:
   return probe.finish(scene.particles, {dx, scene.particles.size(), steps, seconds_since(t_start)});
 }
 
-HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed) {
+HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed,
+                                 const AtEnd& at_end) {
   using X = HugoniotExact;
   const double up = impact_speed / 2, p_rh = X::pressure(impact_speed);
   char speed[64];
@@ -133,11 +134,13 @@ HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string
   const Totals t1 = summarise_totals(scene.particles);
   r.momentum_ratio = norm(t1.momentum) / momentum_scale;
   r.energy_drift = (t1.total_energy() - t0.total_energy()) / t0.total_energy();
+  if (at_end) at_end(scene, end);
   return r;
 }
 
 ObservableRun run_observables(const std::string& case_file, const std::string& spacing,
-                              const std::vector<std::string>& sets, const std::string& out_dir) {
+                              const std::vector<std::string>& sets, const std::string& out_dir,
+                              const AtEnd& at_end) {
   Scene scene = build_scene(load_case_file(case_file, sets, spacing));
   reference::ReferenceSolver solver(scene);
   RunOptions opt;
@@ -151,6 +154,7 @@ ObservableRun run_observables(const std::string& case_file, const std::string& s
   r.observables = res.observables;
   const double e0 = res.initial_totals.total_energy();
   r.energy_drift = (res.final_totals.total_energy() + res.clock.contact_work - e0) / e0;
+  if (at_end) at_end(scene, res.clock.time);
   return r;
 }
 

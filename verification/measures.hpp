@@ -2,6 +2,7 @@
 // library for the CTest verifications (analytic_*.cpp) and `impactsph verify`, so a test and the
 // convergence report measure the same thing the same way.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -80,7 +81,11 @@ struct HugoniotMeasure {
   double us_error() const { return us / HugoniotExact::us(impact_speed) - 1; }
   double pressure_error() const { return pressure / HugoniotExact::pressure(impact_speed) - 1; }
 };
-HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed);
+// Called with the scene at the end of a run and the time reached (s): a caller's look at the final state.
+using AtEnd = std::function<void(const Scene& scene, double time)>;
+
+HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed,
+                                 const AtEnd& at_end = {});
 
 // Runs a case through the run driver (so a case with stop_when_settled ends when its residual velocity
 // is steady) into `out_dir`, quietly, and measures its [observables].
@@ -90,6 +95,7 @@ struct ObservableRun {
   double energy_drift = 0;  // (E_end + contact work - E_0)/E_0
 };
 ObservableRun run_observables(const std::string& case_file, const std::string& spacing,
-                              const std::vector<std::string>& sets, const std::string& out_dir);
+                              const std::vector<std::string>& sets, const std::string& out_dir,
+                              const AtEnd& at_end = {});
 
 }  // namespace impactsph::verification
