@@ -197,6 +197,13 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   const double e0 = r.initial_totals.total_energy();
   const double e1 = r.final_totals.total_energy() + r.clock.contact_work;
   if (e0 != 0) std::printf("  energy drift %.3g%% (contact took %.6g J)\n", 100 * (e1 - e0) / std::abs(e0), r.clock.contact_work);
+  const double k0 = r.initial_totals.kinetic_energy;
+  if (k0 > 0) {
+    const double plastic = r.final_totals.plastic_work - r.initial_totals.plastic_work;
+    const double other = r.final_totals.internal_energy - r.initial_totals.internal_energy - plastic;
+    std::printf("  of the initial kinetic energy, %.1f %% is plastic work and %.1f %% other internal energy "
+                "(viscous heat, stored elastic)\n", 100 * plastic / k0, 100 * other / k0);
+  }
   const CaseObservables& o = r.observables;
   if (r.settled) std::printf("  stopped early: the residual velocity was steady\n");
   if (o.taylor_bar)

@@ -32,7 +32,7 @@ static_assert(std::is_trivially_copyable_v<RunClock>);
 template <class Set, class F>
 void for_each_array(Set& p, F&& f) {
   f(p.pos); f(p.vel); f(p.mass); f(p.rho); f(p.energy); f(p.pressure); f(p.h); f(p.dev_stress);
-  f(p.plastic_strain); f(p.damage); f(p.temperature); f(p.bulking_pressure); f(p.body); f(p.material); f(p.fixed);
+  f(p.plastic_strain); f(p.plastic_work); f(p.damage); f(p.temperature); f(p.bulking_pressure); f(p.body); f(p.material); f(p.fixed);
 }
 
 std::uint64_t bytes_per_particle() {

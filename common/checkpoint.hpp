@@ -13,7 +13,7 @@
 
 namespace impactsph {
 
-inline constexpr std::uint32_t kCheckpointVersion = 3;  // 3: JH-2 bulking pressure per particle
+inline constexpr std::uint32_t kCheckpointVersion = 4;  // 3: JH-2 bulking pressure; 4: plastic work per particle
 
 struct CheckpointData {
   ParticleSet particles;

@@ -133,6 +133,7 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
                       {"speed_m_s", norm(b.velocity)},
                       {"kinetic_energy_J", b.kinetic_energy},
                       {"internal_energy_J", b.internal_energy},
+                      {"plastic_work_J", b.plastic_work},
                       {"damaged_mass_fraction", b.damaged_fraction}});
   }
   j["bodies"] = bodies;
@@ -145,6 +146,17 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
                  {"final_energy_J", e1},
                  {"contact_energy_J", r.clock.contact_work},
                  {"energy_drift_relative", e0 != 0 ? (e1 - e0) / std::abs(e0) : 0.0}};
+  // Where the initial kinetic energy went: plastic work (sum m w_p), and the rest of the internal energy
+  // gained, which is the artificial viscosity's heat plus the elastic and compression energy still stored
+  // (small once the bodies are at rest): cases/taylor-bar/README.md, "Where the energy goes".
+  const double k0 = r.initial_totals.kinetic_energy;
+  const double gained = r.final_totals.internal_energy - r.initial_totals.internal_energy;
+  const double plastic = r.final_totals.plastic_work - r.initial_totals.plastic_work;
+  j["energy_partition"] = {{"initial_kinetic_energy_J", k0},
+                           {"plastic_work_J", plastic},
+                           {"other_internal_energy_J", gained - plastic},
+                           {"plastic_work_share", k0 > 0 ? plastic / k0 : 0.0},
+                           {"other_internal_share", k0 > 0 ? (gained - plastic) / k0 : 0.0}};
   const CaseObservables& o = r.observables;
   nlohmann::json obs = nlohmann::json::object();
   if (o.taylor_bar) {

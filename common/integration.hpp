@@ -76,16 +76,17 @@ IMPACTSPH_HD PlasticResult<Real> trial_plastic_return(const MaterialParams<Real>
   return plastic_update(mat, S, eps_p, eps_rate, T, rho, D, P);
 }
 
-// End of a step for one particle (F 4.7-4.9, X eq 28): accumulate the plastic strain and heating of the
-// final stage, recompute the pressure (Pa) from the EOS and the bulking increment dP_bulk, bound it as
+// End of a step for one particle (F 4.7-4.9, X eq 28): accumulate the plastic strain, the plastic work
+// per unit mass (J/kg) and the heating of the final stage, recompute the pressure (Pa) from the EOS and the bulking increment dP_bulk, bound it as
 // the material carries it at its damage (apply_failure), add the damage increment (D capped at 1), grow
 // the JH-2 bulking increment with the strength the damage took (the strength lost becomes pressure),
 // and strip a failed particle of what it no longer carries. strain_rate in 1/s.
 template <class Real>
 IMPACTSPH_HD void finish_step(const MaterialParams<Real>& mat, Real rho, Real energy, Sym3<Real>& S, Real& plastic_strain,
-                              Real& temperature, Real& damage, Real& pressure, Real& dP_bulk, Real d_eps_p,
-                              Real d_temperature, Real strain_rate) {
+                              Real& plastic_work, Real& temperature, Real& damage, Real& pressure, Real& dP_bulk,
+                              Real d_eps_p, Real d_plastic_work, Real d_temperature, Real strain_rate) {
   plastic_strain += d_eps_p;
+  plastic_work += d_plastic_work;
   temperature += d_temperature;
   Real c = 0;
   pressure = material_pressure(mat, rho, energy, dP_bulk, c);

@@ -13,6 +13,7 @@ struct BodySummary {
   Vec3d velocity{0, 0, 0};        // mass-weighted mean velocity, m/s
   double kinetic_energy = 0;      // J
   double internal_energy = 0;     // J (sum m e)
+  double plastic_work = 0;        // J (sum m w_p): the part of the internal energy that plastic flow did
   double damaged_fraction = 0;    // mass fraction with D >= 0.99
 };
 
@@ -20,6 +21,7 @@ struct Totals {
   Vec3d momentum{0, 0, 0};  // kg m/s
   double kinetic_energy = 0;
   double internal_energy = 0;
+  double plastic_work = 0;  // J, part of internal_energy
   double total_energy() const { return kinetic_energy + internal_energy; }
 };
 
@@ -35,6 +37,7 @@ inline std::vector<BodySummary> summarise_bodies(const ParticleSet& p, std::size
     momentum[static_cast<std::size_t>(p.body[i])] += m * p.vel[i];
     b.kinetic_energy += 0.5 * m * norm2(p.vel[i]);
     b.internal_energy += m * p.energy[i];
+    b.plastic_work += m * p.plastic_work[i];
     if (p.damage[i] >= 0.99) b.damaged_fraction += m;
   }
   for (std::size_t k = 0; k < body_count; ++k) {
@@ -52,6 +55,7 @@ inline Totals summarise_totals(const ParticleSet& p) {
     t.momentum += p.mass[i] * p.vel[i];
     t.kinetic_energy += 0.5 * p.mass[i] * norm2(p.vel[i]);
     t.internal_energy += p.mass[i] * p.energy[i];
+    t.plastic_work += p.mass[i] * p.plastic_work[i];
   }
   return t;
 }

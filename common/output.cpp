@@ -247,6 +247,7 @@ void FrameSeriesWriter::write_frame(double time, std::int64_t index, const Parti
   point_data += tag("Float64", "pressure", 1, data.add(p.pressure.data(), n));
   scalar("von_mises", [&](std::size_t i) { return von_mises(p.dev_stress[i]); });
   point_data += tag("Float64", "plastic_strain", 1, data.add(p.plastic_strain.data(), n));
+  point_data += tag("Float64", "plastic_work", 1, data.add(p.plastic_work.data(), n));
   point_data += tag("Float64", "damage", 1, data.add(p.damage.data(), n));
   point_data += tag("Float64", "temperature", 1, data.add(p.temperature.data(), n));
   point_data += tag("Float64", "bulking_pressure", 1, data.add(p.bulking_pressure.data(), n));

@@ -23,6 +23,7 @@ struct ParticleSet {
   std::vector<double> h;              // smoothing length, m
   std::vector<Sym3d> dev_stress;      // deviatoric stress S, Pa
   std::vector<double> plastic_strain; // equivalent plastic strain
+  std::vector<double> plastic_work;   // plastic work per unit mass, sum sigma_y d eps_p / rho, J/kg
   std::vector<double> damage;         // D in [0, 1]
   std::vector<double> temperature;    // K, raised by plastic work (F 3.14)
   std::vector<double> bulking_pressure; // Pa, JH-2 bulking increment dP (X eq 28); 0 for other materials
@@ -33,7 +34,7 @@ struct ParticleSet {
   std::size_t size() const { return pos.size(); }
   void resize(std::size_t n) {
     pos.resize(n); vel.resize(n); mass.resize(n); rho.resize(n); energy.resize(n); pressure.resize(n);
-    h.resize(n); dev_stress.resize(n); plastic_strain.resize(n); damage.resize(n);
+    h.resize(n); dev_stress.resize(n); plastic_strain.resize(n); plastic_work.resize(n); damage.resize(n);
     temperature.resize(n); bulking_pressure.resize(n); body.resize(n);
     material.resize(n); fixed.resize(n);
   }

@@ -856,6 +856,7 @@ Scene build_scene(const CaseSpec& spec) {
       ps.h[p] = h;
       ps.dev_stress[p] = Sym3d::zero();
       ps.plastic_strain[p] = 0;
+      ps.plastic_work[p] = 0;
       ps.damage[p] = 0;
       ps.temperature[p] = mat.room_temperature;
       ps.bulking_pressure[p] = 0;

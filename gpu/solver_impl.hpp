@@ -278,7 +278,7 @@ template <class Real>
 class Solver final : public GpuStepper {
  public:
   static constexpr bool kFlush = sizeof(Real) < sizeof(double);  // float: subnormals to zero (launch.hpp)
-  static constexpr int kHostScalars = 8;  // scalar fields copied back to the host (download)
+  static constexpr int kHostScalars = 9;  // scalar fields copied back to the host (download)
   Solver(const Scene& scene, const char* build) : numerics_(scene.spec.numerics) {
     const bool dbl = sizeof(Real) == sizeof(double);
     name_ = std::string("gpu port (") + (dbl ? "double" : "float") + ", " + build + ")";
@@ -387,6 +387,7 @@ class Solver final : public GpuStepper {
     const Real* T = raw(temperature_);
     const Real* B = raw(bulking_);
     const Real* H = raw(h_);
+    const Real* W = raw(plastic_work_);
     // Scatter into the scene's order, widened to double.
     launch<kFlush>("copy_to_host", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const std::int64_t o = orig[i];
@@ -402,12 +403,14 @@ class Solver final : public GpuStepper {
       f[5 * n + o] = T[i];
       f[6 * n + o] = B[i];
       f[7 * n + o] = H[i];
+      f[8 * n + o] = W[i];
     });
     thrust::copy(out_vec_[0].begin(), out_vec_[0].end(), p.pos.begin());
     thrust::copy(out_vec_[1].begin(), out_vec_[1].end(), p.vel.begin());
     thrust::copy(out_sym_.begin(), out_sym_.end(), p.dev_stress.begin());
     std::vector<double>* fields[kHostScalars] = {&p.rho,    &p.energy,      &p.pressure,         &p.plastic_strain,
-                                                 &p.damage, &p.temperature, &p.bulking_pressure, &p.h};
+                                                 &p.damage, &p.temperature, &p.bulking_pressure, &p.h,
+                                                 &p.plastic_work};
     for (int k = 0; k < kHostScalars; ++k)
       thrust::copy(out_scalar_.begin() + k * n, out_scalar_.begin() + (k + 1) * n, fields[k]->begin());
   }
@@ -458,6 +461,7 @@ class Solver final : public GpuStepper {
     upload_converted(p.energy, y0_.energy);
     upload_converted(p.pressure, pressure_);
     upload_converted(p.plastic_strain, plastic_strain_);
+    upload_converted(p.plastic_work, plastic_work_);
     upload_converted(p.damage, damage_);
     upload_converted(p.temperature, temperature_);
     upload_converted(p.bulking_pressure, bulking_);
@@ -468,8 +472,8 @@ class Solver final : public GpuStepper {
     fixed_ = p.fixed;
     original_.resize(n);
     thrust::sequence(original_.begin(), original_.end());
-    for (DVec<Real>* a : {&rate_drho_, &rate_de_, &strain_rate_, &contact_power_, &d_eps_p_, &d_temperature_,
-                          &history_rate_, &scratch_real_})
+    for (DVec<Real>* a : {&rate_drho_, &rate_de_, &strain_rate_, &contact_power_, &d_eps_p_, &d_plastic_work_,
+                          &d_temperature_, &history_rate_, &scratch_real_})
       a->resize(n);
     rate_pos_.resize(n); rate_acc_.resize(n); rate_S_.resize(n); grad_v_.resize(n);
     fallback_.resize(n); neighbour_count_.resize(n); pos_at_sort_.resize(n);
@@ -564,7 +568,7 @@ class Solver final : public GpuStepper {
       DVec<Vec3p> t3p; DVec<Vec3<Real>> t3; DVec<Real> t1; DVec<Sym3<Real>> ts; DVec<std::int32_t> ti;
       DVec<std::uint8_t> tb;
       permute(y0_.pos, t3p); permute(y0_.vel, t3); permute(y0_.rho, t1); permute(y0_.energy, t1); permute(y0_.S, ts);
-      permute(pressure_, t1); permute(plastic_strain_, t1); permute(damage_, t1); permute(temperature_, t1);
+      permute(pressure_, t1); permute(plastic_strain_, t1); permute(plastic_work_, t1); permute(damage_, t1); permute(temperature_, t1);
       permute(bulking_, t1); permute(mass_, t1); permute(h_, t1); permute(material_, ti); permute(body_, ti); permute(fixed_, tb);
       permute(original_, ti);
     }
@@ -940,6 +944,7 @@ class Solver final : public GpuStepper {
     const Real* bulking = raw(bulking_);
     const std::int32_t* material = raw(material_);
     Real* h_eps = raw(d_eps_p_);
+    Real* h_work = raw(d_plastic_work_);
     Real* h_T = raw(d_temperature_);
     Real* h_rate = raw(history_rate_);
     launch<kFlush>(record ? "advance_full" : "advance_half", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
@@ -959,6 +964,7 @@ class Solver final : public GpuStepper {
       out.S[i] = S;
       if (record) {
         h_eps[i] = pr.d_eps_p;
+        h_work[i] = pr.plastic_work;
         h_T[i] = pr.d_T;
         h_rate[i] = reps[i];
       }
@@ -973,6 +979,7 @@ class Solver final : public GpuStepper {
     const MaterialParams<Real>* mats = raw(materials_);
     const std::int32_t* material = raw(material_);
     Real* eps_p = raw(plastic_strain_);
+    Real* work = raw(plastic_work_);
     Real* T = raw(temperature_);
     Real* D = raw(damage_);
     Real* P = raw(pressure_);
@@ -983,11 +990,12 @@ class Solver final : public GpuStepper {
     const Mat3<Real>* grad_v = raw(grad_v_);
     const Real dt = static_cast<Real>(dt_in);
     const Real* h_eps = raw(d_eps_p_);
+    const Real* h_work = raw(d_plastic_work_);
     const Real* h_T = raw(d_temperature_);
     const Real* h_rate = raw(history_rate_);
     launch<kFlush>("finish_step", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      finish_step(mats[material[i]], y.rho[i], y.energy[i], y.S[i], eps_p[i], T[i], D[i], P[i], bulking[i], h_eps[i],
-                  h_T[i], h_rate[i]);
+      finish_step(mats[material[i]], y.rho[i], y.energy[i], y.S[i], eps_p[i], work[i], T[i], D[i], P[i], bulking[i],
+                  h_eps[i], h_work[i], h_T[i], h_rate[i]);
       const BodySmoothing<Real> b = smoothing[body[i]];
       if (b.variable) h[i] = advance_smoothing_length(h[i], grad_v[i].trace(), dt, b.h_lo, b.h_hi);
     });
@@ -1048,13 +1056,14 @@ class Solver final : public GpuStepper {
 
   // Real particles, in the order of the last sort (original_ maps to the scene's order).
   StateArrays<Real> y0_, y_half_, y1_;
-  DVec<Real> pressure_, plastic_strain_, damage_, temperature_, bulking_, mass_, h_;
+  DVec<Real> pressure_, plastic_strain_, plastic_work_, damage_, temperature_, bulking_, mass_, h_;
   DVec<std::int32_t> material_, body_, original_;
   DVec<std::uint8_t> fixed_;
   DVec<Vec3p> pos_at_sort_;
   // Rates of an evaluation and the history of the final stage.
   DVec<Vec3<Real>> rate_pos_, rate_acc_;
-  DVec<Real> rate_drho_, rate_de_, strain_rate_, contact_power_, d_eps_p_, d_temperature_, history_rate_, scratch_real_;
+  DVec<Real> rate_drho_, rate_de_, strain_rate_, contact_power_, d_eps_p_, d_plastic_work_, d_temperature_, history_rate_,
+      scratch_real_;
   DVec<Sym3<Real>> rate_S_;
   DVec<Mat3<Real>> grad_v_;
   DVec<std::int32_t> fallback_, neighbour_count_;

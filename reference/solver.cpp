@@ -254,6 +254,7 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
   out.pos.resize(n); out.vel.resize(n); out.rho.resize(n); out.energy.resize(n); out.dev_stress.resize(n);
   if (history) {
     history->d_eps_p.resize(static_cast<std::size_t>(n));
+    history->d_plastic_work.resize(static_cast<std::size_t>(n));
     history->d_temperature.resize(static_cast<std::size_t>(n));
     history->strain_rate.resize(static_cast<std::size_t>(n));
   }
@@ -273,6 +274,7 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
     out.dev_stress[i] = s;
     if (history) {
       history->d_eps_p[i] = pr.d_eps_p;
+      history->d_plastic_work[i] = pr.plastic_work;
       history->d_temperature[i] = pr.d_T;
       history->strain_rate[i] = f.strain_rate[i];
     }
@@ -387,9 +389,9 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
     const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
-    finish_step(mat, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i], p.temperature[i], p.damage[i],
-                p.pressure[i], p.bulking_pressure[i], history.d_eps_p[i], history.d_temperature[i],
-                history.strain_rate[i]);
+    finish_step(mat, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i], p.plastic_work[i], p.temperature[i],
+                p.damage[i], p.pressure[i], p.bulking_pressure[i], history.d_eps_p[i], history.d_plastic_work[i],
+                history.d_temperature[i], history.strain_rate[i]);
     // Variable smoothing length (X eqs 9-10): dh/dt = (1/3) h div v, within the body's bounds.
     const std::size_t b = static_cast<std::size_t>(p.body[i]);
     if (body_variable_h_[b])

@@ -53,7 +53,7 @@ class ReferenceSolver final : public Stepper {
   };
   // What the final stage of a step does to the history variables of each particle.
   struct History {
-    std::vector<double> d_eps_p, d_temperature, strain_rate;
+    std::vector<double> d_eps_p, d_plastic_work, d_temperature, strain_rate;
   };
 
   void load_constants(const ParticleSet& p);

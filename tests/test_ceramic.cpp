@@ -161,9 +161,10 @@ TEST(Jh2, FinishStepDamagesBulksAndRaisesThePressure) {
   const double rho = 3921 * 1.01, P_eos = 130.95e9 * 0.01;
   const double eps_f = 0.005 * (P_eos / 1.46e9 + 0.2 / 1.46);
   Sym3<double> S{1e8, -5e7, -5e7, 0, 0, 0};
-  double eps_p = 0, T = 293, D = 0, P = 0, bulking = 0;
-  finish_step(m, rho, 0.0, S, eps_p, T, D, P, bulking, 2 * eps_f, 0.0, 0.0);
+  double eps_p = 0, work = 0, T = 293, D = 0, P = 0, bulking = 0;
+  finish_step(m, rho, 0.0, S, eps_p, work, T, D, P, bulking, 2 * eps_f, 1.5e3, 0.0, 0.0);
   EXPECT_EQ(eps_p, 2 * eps_f);
+  EXPECT_EQ(work, 1.5e3);  // the plastic work per unit mass of the step, J/kg, accumulated
   EXPECT_EQ(D, 1.0);
   EXPECT_NEAR(bulking, 0.50347416746430016e9, 1e4);
   EXPECT_NEAR(P, P_eos + bulking, 1e-3);
@@ -177,8 +178,8 @@ TEST(Jh2, FinishStepDamagesBulksAndRaisesThePressure) {
   metal.damage.kind = DamageKind::CriticalPlasticStrain;
   metal.damage.critical_plastic_strain = 0.1;
   Sym3<double> Sm{1e8, -5e7, -5e7, 0, 0, 0};
-  double eps_m = 0.09, Tm = 293, Dm = 0, Pm = 0, bm = 0;
-  finish_step(metal, 3921 * 0.99, 0.0, Sm, eps_m, Tm, Dm, Pm, bm, 0.02, 0.0, 0.0);
+  double eps_m = 0.09, wm = 0, Tm = 293, Dm = 0, Pm = 0, bm = 0;
+  finish_step(metal, 3921 * 0.99, 0.0, Sm, eps_m, wm, Tm, Dm, Pm, bm, 0.02, 0.0, 0.0, 0.0);
   EXPECT_EQ(Dm, 1.0);
   EXPECT_EQ(Sm.xx, 0.0);
   EXPECT_EQ(Pm, 0.0);

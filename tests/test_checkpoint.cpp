@@ -58,6 +58,7 @@ ParticleSet awkward_particles(std::size_t n) {
     p.h[i] = 1e-4 + 1e-6 * u(rng);
     p.dev_stress[i] = {u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)};
     p.plastic_strain[i] = std::abs(u(rng));
+    p.plastic_work[i] = 1e6 * std::abs(u(rng));
     p.damage[i] = std::abs(u(rng));
     p.body[i] = static_cast<std::int32_t>(i % 3);
     p.material[i] = static_cast<std::int32_t>(i % 2);
@@ -102,6 +103,7 @@ TEST_F(CheckpointTest, RoundTripIsBitExact) {
   EXPECT_TRUE(same_bits(d.particles.h, p.h));
   EXPECT_TRUE(same_bits(d.particles.dev_stress, p.dev_stress));
   EXPECT_TRUE(same_bits(d.particles.plastic_strain, p.plastic_strain));
+  EXPECT_TRUE(same_bits(d.particles.plastic_work, p.plastic_work));
   EXPECT_TRUE(same_bits(d.particles.damage, p.damage));
   EXPECT_TRUE(same_bits(d.particles.body, p.body));
   EXPECT_TRUE(same_bits(d.particles.material, p.material));

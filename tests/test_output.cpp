@@ -165,7 +165,7 @@ TEST_F(OutputTest, VtuIsWellFormedAndCarriesEveryField) {
   EXPECT_NE(file.find("NumberOfPoints=\"5\" NumberOfCells=\"5\""), std::string::npos);
   EXPECT_NE(file.find("Name=\"TIME\" NumberOfTuples=\"1\" format=\"ascii\">1.25e-05<"), std::string::npos);
 
-  for (const char* field : {"velocity", "speed", "density", "pressure", "von_mises", "plastic_strain", "damage",
+  for (const char* field : {"velocity", "speed", "density", "pressure", "von_mises", "plastic_strain", "plastic_work", "damage",
                             "temperature", "bulking_pressure", "internal_energy", "smoothing_length", "mass",
                             "body_id", "fixed", "Points", "connectivity", "offsets", "types"})
     EXPECT_NE(file.find("Name=\"" + std::string(field) + "\""), std::string::npos) << field;

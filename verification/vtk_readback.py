@@ -40,6 +40,7 @@ FIELDS = {
     "pressure": ("double", 1),
     "von_mises": ("double", 1),
     "plastic_strain": ("double", 1),
+    "plastic_work": ("double", 1),
     "damage": ("double", 1),
     "temperature": ("double", 1),
     "bulking_pressure": ("double", 1),
