@@ -27,6 +27,7 @@
 #include "app/picture.hpp"
 #include "app/run_args.hpp"
 #include "app/scoped_signals.hpp"
+#include "app/solver_choice.hpp"
 #include "common/case_file.hpp"
 #include "common/checkpoint.hpp"
 #include "common/driver.hpp"
@@ -35,7 +36,6 @@
 #include "common/output.hpp"
 #include "common/scene.hpp"
 #include "common/units.hpp"
-#include "reference/solver.hpp"
 
 namespace fs = std::filesystem;
 
@@ -266,13 +266,13 @@ struct Search {
   std::mutex print_mutex;
 };
 
-// The observables of a finished reference run with this fingerprint in `dir`, if summary.json holds one.
-// `impactsph run` with the same case file, --spacing and --set values gives the same fingerprint, so a run
-// made by hand counts too.
-bool read_finished_run(const fs::path& dir, const std::string& fingerprint, Run& r) {
+// The observables of a finished run of the search's solver with this fingerprint in `dir`, if
+// summary.json holds one. `impactsph run` with the same case file, --spacing and --set values (and
+// --backend, --precision) gives the same fingerprint and solver, so a run made by hand counts too.
+bool read_finished_run(const Search& s, const fs::path& dir, const std::string& fingerprint, Run& r) {
   const nlohmann::json j = read_json_or_null(dir / "summary.json");
   if (!j.is_object() || j.value("fingerprint", "") != fingerprint || !j.value("completed", false) ||
-      j.value("solver", "").rfind("reference", 0) != 0 || !j.contains("observables"))
+      !solver_is(j.value("solver", ""), s.opt.backend, s.opt.precision) || !j.contains("observables"))
     return false;
   try {
     const nlohmann::json& o = j.at("observables");
@@ -291,12 +291,13 @@ bool read_finished_run(const fs::path& dir, const std::string& fingerprint, Run&
   return true;
 }
 
-// A checkpoint in `dir` that a reference run of these inputs wrote (a manual run says its backend in
-// run.json; the search's own runs are always the reference).
-bool has_checkpoint_of(const fs::path& dir, const std::string& fingerprint) {
+// A checkpoint in `dir` that a run of these inputs on the search's solver wrote (run.json, which the
+// search's runs write as `impactsph run` does, says the backend and precision).
+bool has_checkpoint_of(const Search& s, const fs::path& dir, const std::string& fingerprint) {
   if (!fs::exists(checkpoint_path(dir))) return false;
   const nlohmann::json run = read_json_or_null(dir / "run.json");
-  if (run.is_object() && (run.value("backend", "reference") != "reference" || run.value("precision", "double") != "double"))
+  if (!run.is_object() || run.value("backend", "reference") != s.opt.backend ||
+      run.value("precision", "double") != s.opt.precision)
     return false;
   try {
     return read_checkpoint(checkpoint_path(dir)).fingerprint == fingerprint;
@@ -312,7 +313,7 @@ Run run_one(const Search& s, double v, int threads) {
   std::vector<std::string> sets = s.opt.sets;
   sets.push_back(s.projectile + ".velocity=" + speed_text(v) + " m/s");
   const std::string fingerprint = run_fingerprint(s.opt.case_file, s.opt.spacing, sets);
-  if (read_finished_run(r.dir, fingerprint, r)) {
+  if (read_finished_run(s, r.dir, fingerprint, r)) {
     r.origin = Origin::Reused;
     r.done = true;
     return r;
@@ -323,13 +324,13 @@ Run run_one(const Search& s, double v, int threads) {
   try {
     CaseSpec spec = load_case_file(s.opt.case_file, sets, s.opt.spacing);
     Scene scene = build_scene(spec);
-    reference::ReferenceSolver solver(scene);
+    const std::unique_ptr<Stepper> solver = make_stepper(scene, s.opt.backend, s.opt.precision);
     RunOptions ro;
     ro.out_dir = r.dir;
     ro.quiet = true;
     ro.threads = threads;
     ro.fingerprint = fingerprint;
-    ro.restart = has_checkpoint_of(r.dir, fingerprint);
+    ro.restart = has_checkpoint_of(s, r.dir, fingerprint);
     if (ro.restart) r.origin = Origin::Continued;
     ro.install_signal_handlers = false;  // process-wide; the search handles Ctrl-C (ScopedSignals below)
     ro.stop = &g_abort_runs;
@@ -337,8 +338,18 @@ Run run_one(const Search& s, double v, int threads) {
     ro.command_line = {"impactsph", "run", s.opt.case_file};
     if (!s.opt.spacing.empty()) ro.command_line.insert(ro.command_line.end(), {"--spacing", s.opt.spacing});
     for (const std::string& x : sets) ro.command_line.insert(ro.command_line.end(), {"--set", x});
+    if (s.opt.backend != "reference" || s.opt.precision != "double")
+      ro.command_line.insert(ro.command_line.end(), {"--backend", s.opt.backend, "--precision", s.opt.precision});
     ro.command_line.insert(ro.command_line.end(), {"--out", r.dir.string()});
-    const RunResult res = run_simulation(scene, solver, ro);
+    if (!ro.restart) {
+      // The inputs, as `impactsph run` writes them, so that `impactsph run --restart DIR` continues it too.
+      fs::create_directories(r.dir);
+      const nlohmann::json inputs{{"case_file", fs::absolute(s.opt.case_file).string()}, {"spacing", s.opt.spacing},
+                                  {"set", sets}, {"threads", threads}, {"backend", s.opt.backend},
+                                  {"precision", s.opt.precision}};
+      write_text_atomic(r.dir / "run.json", inputs.dump(2) + "\n");
+    }
+    const RunResult res = run_simulation(scene, *solver, ro);
     // The picture's data and script; the report draws those of its key runs, one after another.
     if (!res.interrupted && spec.output.picture) {
       try {
@@ -482,6 +493,8 @@ void write_results(const Search& s, const Outcome& o) {
   j["to_m_s"] = s.v_to;
   j["tolerance_m_s"] = s.tolerance;
   j["jobs"] = s.jobs;
+  j["backend"] = s.opt.backend;
+  j["precision"] = s.opt.precision;
   j["status"] = o.status;
   j["limit_m_s"] = o.bracketed ? nlohmann::json(o.limit()) : nlohmann::json(nullptr);
   j["bracket_m_s"] = o.bracketed ? nlohmann::json::array({o.lo, o.hi}) : nlohmann::json(nullptr);
@@ -864,6 +877,12 @@ int ballistic_limit_command(const BallisticOptions& opt) {
       throw std::runtime_error("--set " + set + ": ballistic-limit sets the impact speed of '" + s.projectile +
                                "' itself (--from, --to); leave it out");
   }
+  if (opt.backend != "reference" && opt.backend != "gpu")
+    throw std::runtime_error("--backend " + opt.backend + ": expected reference or gpu");
+  if (opt.precision != "double" && opt.precision != "float")
+    throw std::runtime_error("--precision " + opt.precision + ": expected double or float");
+  if (opt.backend == "reference" && opt.precision != "double")
+    throw std::runtime_error("--precision " + opt.precision + ": the reference solver runs in double only (use --backend gpu)");
   const Reference reference = read_reference(fs::path(opt.case_file).parent_path() / "reference.csv");
   s.out = opt.out.empty() ? fs::path("runs") / (s.spec.name + "-ballistic") : fs::path(opt.out);
   fs::create_directories(s.out);
@@ -877,6 +896,10 @@ int ballistic_limit_command(const BallisticOptions& opt) {
     std::printf("ballistic-limit: %s at spacing %s, %s to %s m/s until the bracket is %s m/s wide\n",
                 s.spec.name.c_str(), format_quantity(s.spec.numerics.spacing, Dimension::Length).c_str(),
                 speed_text(s.v_from).c_str(), speed_text(s.v_to).c_str(), speed_text(s.tolerance).c_str());
+    const std::string solver = opt.backend == "reference"
+                                   ? "reference (double)"
+                                   : "gpu port (" + opt.precision + "; the CUDA build on a device, else the host build)";
+    std::printf("  solver: %s\n", solver.c_str());
     std::printf("  %d run%s at a time, %d thread%s each; the 2 ends, then about %.0f round%s of %d; results in %s\n",
                 s.jobs, s.jobs > 1 ? "s" : "", std::max(1, s.cores / s.jobs), s.cores / s.jobs > 1 ? "s" : "", rounds,
                 rounds == 1 ? "" : "s", s.jobs, s.out.string().c_str());

@@ -15,6 +15,8 @@ struct BallisticOptions {
   std::string tolerance = "5 m/s"; // stop when the bracket is this narrow
   std::string out;                 // empty: runs/<case name>-ballistic
   int jobs = 0;                    // concurrent runs; 0: one per core
+  std::string backend = "reference";  // --backend: reference or gpu (the port; its host build without a GPU)
+  std::string precision = "double";   // --precision: double, or float (gpu only)
   bool quiet = false;              // no banner and no line per run
   std::vector<std::string> command_line;  // recorded in ballistic.json
 };

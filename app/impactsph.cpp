@@ -18,6 +18,7 @@
 
 #include "app/ballistic_limit.hpp"
 #include "app/picture.hpp"
+#include "app/solver_choice.hpp"
 #include "app/run_args.hpp"
 #include "app/sweep.hpp"
 #include "app/verify.hpp"
@@ -117,17 +118,10 @@ Scene load_scene(const CaseArgs& a) {
 
 // The solver of --backend and --precision: the reference (double only) or the gpu port, which runs its
 // host build on a machine without a CUDA device and says so in one line.
-std::unique_ptr<Stepper> make_stepper(const Scene& scene, const std::string& backend, const std::string& precision) {
-  if (backend == "reference") {
-    if (precision != "double")
-      throw std::runtime_error("--precision " + precision + ": the reference solver runs in double only (use --backend gpu)");
-    return std::make_unique<reference::ReferenceSolver>(scene);
-  }
+std::unique_ptr<Stepper> make_run_stepper(const Scene& scene, const std::string& backend, const std::string& precision) {
   std::string note;
-  std::unique_ptr<gpu::GpuStepper> s =
-      gpu::make_solver(scene, precision == "float" ? gpu::Precision::Float : gpu::Precision::Double, &note);
+  std::unique_ptr<Stepper> s = make_stepper(scene, backend, precision, &note);
   if (!note.empty()) std::fprintf(stderr, "note: %s\n", note.c_str());
-  s->defer_host_copies(true);  // the driver calls copy_to_host before it reads the particles
   return s;
 }
 
@@ -172,7 +166,7 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
     write_text_atomic(opt.out_dir / "run.json", j.dump(2) + "\n");
   }
 
-  const std::unique_ptr<Stepper> solver = make_stepper(scene, backend, precision);
+  const std::unique_ptr<Stepper> solver = make_run_stepper(scene, backend, precision);
   if (!quiet) {
     std::printf("ImpactSPH: %s, %zu particles, %d threads, %s, output in %s%s\n", scene.spec.name.c_str(),
                 scene.particles.size(), threads, solver->name().c_str(), opt.out_dir.string().c_str(),
@@ -296,6 +290,10 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   ballistic->add_option("--out", ballistic_opt.out, "output folder (default runs/<case name>-ballistic)");
   ballistic->add_flag("--quiet,-q", ballistic_opt.quiet, "print only the results, no line per run");
+  ballistic->add_option("--backend", ballistic_opt.backend, "solver of every run: reference (default) or gpu (the port)")
+      ->check(CLI::IsMember({"reference", "gpu"}));
+  ballistic->add_option("--precision", ballistic_opt.precision, "double (default) or float (gpu backend only)")
+      ->check(CLI::IsMember({"double", "float"}));
   add_case_options(ballistic, ballistic_args);
 
   SweepOptions sweep_opt;
