@@ -317,7 +317,8 @@ int main(int argc, char** argv) {
       "verify", "run the analytic cases over spacings, fit the observed order, write report.md with plots "
                 "(docs/sweeps-and-verification.md)");
   verify->add_option("--suite", verify_opt.suite, "fast: elastic wave and Hugoniot; full: + Taylor bar, 8 mm plate, "
-                                                  "CFL sensitivity; smoke: 3 coarse elastic-wave runs (CI)")
+                                                  "ceramic tile, CFL sensitivity; smoke: 3 coarse elastic-wave "
+                                                  "runs (CI)")
       ->capture_default_str()
       ->check(CLI::IsMember({"fast", "full", "smoke"}));
   verify->add_option("--out", verify_opt.out, "report folder (default runs/verify-<suite>)");

@@ -1,7 +1,9 @@
 // impactsph verify (docs/sweeps-and-verification.md): convergence of the analytic cases against their
 // closed forms over four or more spacings, with the observed order from a least-squares fit in log-log
-// (GSL), the cost of every run, and (full suite) the validation observables against spacing and the
-// time-step sensitivity. Writes DIR/report.md, DIR/results.csv and PNG plots (gnuplot). Host only.
+// (GSL), the cost of every run, per case the wall time against the error of each run (spacing, backend,
+// precision) with the cheapest run within the case's target, and (full suite) the validation observables
+// against spacing and the time-step sensitivity. Writes DIR/report.md, DIR/results.csv and PNG plots
+// (gnuplot). Host only.
 #pragma once
 #include <string>
 #include <vector>
@@ -9,7 +11,7 @@
 namespace impactsph {
 
 struct VerifyOptions {
-  std::string suite = "fast";  // fast: elastic wave and Hugoniot; full: + Taylor bar, plate, CFL sensitivity
+  std::string suite = "fast";  // fast: elastic wave and Hugoniot; full: + Taylor bar, plate, tile, CFL sensitivity
   std::string out;             // default runs/verify-<suite>
   int threads = 0;             // OpenMP threads of each run; 0: all cores
   std::string cases;           // folder of the case folders; default the source tree's cases/

@@ -140,16 +140,18 @@ HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string
 
 ObservableRun run_observables(const std::string& case_file, const std::string& spacing,
                               const std::vector<std::string>& sets, const std::string& out_dir,
-                              const AtEnd& at_end) {
+                              const AtEnd& at_end, const MakeStepper& make) {
   Scene scene = build_scene(load_case_file(case_file, sets, spacing));
-  reference::ReferenceSolver solver(scene);
+  const std::unique_ptr<Stepper> solver =
+      make ? make(scene) : std::make_unique<reference::ReferenceSolver>(scene);
   RunOptions opt;
   opt.out_dir = out_dir;
   opt.quiet = true;
   opt.threads = omp_get_max_threads();
   opt.install_signal_handlers = false;
-  const RunResult res = run_simulation(scene, solver, opt);
+  const RunResult res = run_simulation(scene, *solver, opt);
   ObservableRun r;
+  r.solver = solver->name();
   r.cost = {scene.spec.numerics.spacing, scene.particles.size(), static_cast<long>(res.clock.step), res.wall_seconds};
   r.observables = res.observables;
   const double e0 = res.initial_totals.total_energy();

@@ -3,12 +3,14 @@
 // convergence report measure the same thing the same way.
 #pragma once
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common/case_observables.hpp"
 #include "common/observables.hpp"
 #include "common/scene.hpp"
+#include "common/stepper.hpp"
 
 namespace impactsph::verification {
 
@@ -87,15 +89,20 @@ using AtEnd = std::function<void(const Scene& scene, double time)>;
 HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed,
                                  const AtEnd& at_end = {});
 
+// The solver of a run, made for its scene.
+using MakeStepper = std::function<std::unique_ptr<Stepper>(const Scene& scene)>;
+
 // Runs a case through the run driver (so a case with stop_when_settled ends when its residual velocity
-// is steady) into `out_dir`, quietly, and measures its [observables].
+// is steady) into `out_dir`, quietly, and measures its [observables]. The solver is the reference unless
+// `make` gives another (the gpu port).
 struct ObservableRun {
   CaseObservables observables;
   RunCost cost;
   double energy_drift = 0;  // (E_end + contact work - E_0)/E_0
+  std::string solver;       // as the solver names itself
 };
 ObservableRun run_observables(const std::string& case_file, const std::string& spacing,
                               const std::vector<std::string>& sets, const std::string& out_dir,
-                              const AtEnd& at_end = {});
+                              const AtEnd& at_end = {}, const MakeStepper& make = {});
 
 }  // namespace impactsph::verification
