@@ -1,7 +1,6 @@
-# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the
-# output path below is relative to it).
+# Drawn by impactsph verify; to redraw, run gnuplot on this file in its folder.
 set terminal pngcairo size 1000,750 enhanced font 'Sans,11'
-set output 'verification/reports/full/convergence.png'
+set output 'convergence.png'
 set title 'Convergence against the closed forms (|relative error| against spacing)' noenhanced
 set xlabel 'spacing h [mm]'
 set ylabel '|relative error|'

@@ -1,7 +1,6 @@
-# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the
-# output path below is relative to it).
+# Drawn by impactsph verify; to redraw, run gnuplot on this file in its folder.
 set terminal pngcairo size 1000,750 enhanced font 'Sans,11'
-set output 'verification/reports/full/plate_8mm.png'
+set output 'plate_8mm.png'
 set title '8 mm Weldox 460 E plate at 298 m/s: residual velocity against spacing' noenhanced
 set xlabel 'spacing h [mm]'
 set ylabel 'residual velocity [m/s]'
@@ -9,10 +8,10 @@ set grid
 set key below left Left reverse noenhanced
 set xrange [0:*]
 $o0 << EOD
-4 173.0526647
-2 234.1699001
-1.6 237.0769246
-1.3333333 239.5650584
+4 199.2211563
+2 233.7213059
+1.6 237.201644
+1.3333333 240.2431658
 EOD
 plot $o0 u 1:2 w lp pt 7 ps 1.4 lc rgb '#1f77b4' t '8 mm plate at 298 m/s: residual velocity, simulated', \
      232.7248599 w l lw 2 dt 2 lc rgb '#1f77b4' t '8 mm plate at 298 m/s: residual velocity, experiment 232.7'

@@ -1,7 +1,6 @@
-# Drawn by impactsph verify; to redraw, run gnuplot on this file from the folder verify ran in (the
-# output path below is relative to it).
+# Drawn by impactsph verify; to redraw, run gnuplot on this file in its folder.
 set terminal pngcairo size 1000,750 enhanced font 'Sans,11'
-set output 'verification/reports/full/taylor_bar.png'
+set output 'taylor_bar.png'
 set title 'Taylor bar (OFHC copper, 190 m/s): final shape against spacing' noenhanced
 set xlabel 'spacing h [mm]'
 set ylabel '[mm]'
@@ -9,16 +8,16 @@ set grid
 set key below left Left reverse noenhanced
 set xrange [0:*]
 $o0 << EOD
-1.27 19.55886975
-0.8467 18.99019643
-0.635 18.63528489
-0.508 18.38961072
+1.27 19.48245924
+0.8467 19.0227495
+0.635 18.64006448
+0.508 18.3898008
 EOD
 $o1 << EOD
-1.27 11.94871273
-0.8467 12.05326534
-0.635 12.67347297
-0.508 13.32749051
+1.27 11.19005288
+0.8467 12.43510623
+0.635 12.74068072
+0.508 13.41424064
 EOD
 plot $o0 u 1:2 w lp pt 7 ps 1.4 lc rgb '#1f77b4' t 'Taylor bar: final length, simulated', \
      16.21 w l lw 2 dt 2 lc rgb '#1f77b4' t 'Taylor bar: final length, experiment 16.21', \
