@@ -327,7 +327,7 @@ void check_name(const Reporter& r, const toml::node* at, const std::string& key,
 
 const Keys kEosKinds{"linear", "polynomial", "mie-gruneisen", "gruneisen-cubic"};
 const Keys kStrengthKinds{"hydrodynamic", "elastic", "perfectly-plastic", "johnson-cook", "johnson-holmquist-2"};
-const Keys kDamageKinds{"none", "critical-plastic-strain", "johnson-cook", "johnson-holmquist-2"};
+const Keys kDamageKinds{"none", "critical-plastic-strain", "fracture-energy", "johnson-cook", "johnson-holmquist-2"};
 
 void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
   const std::string kind = e.choice("kind", kEosKinds);
@@ -540,6 +540,17 @@ void read_damage(const View& d, const StrengthParams<double>& strength, DamagePa
     p.kind = DamageKind::CriticalPlasticStrain;
     p.critical_plastic_strain = d.number("critical_plastic_strain");
     d.range("critical_plastic_strain", p.critical_plastic_strain, 0, 10, Dimension::Dimensionless, true);
+    return;
+  }
+  if (kind == "fracture-energy") {
+    d.allow({"kind", "fracture_energy", "band_width_factor", "pair_factor"});
+    p.kind = DamageKind::FractureEnergy;
+    p.fracture_energy = d.quantity("fracture_energy", Dimension::FractureEnergy);
+    d.range("fracture_energy", p.fracture_energy, 0, 1e8, Dimension::FractureEnergy, true, false,
+            "Gamma, the plastic work per unit crack area at failure (damage.hpp)");
+    p.band_width_factor = d.number("band_width_factor");
+    d.range("band_width_factor", p.band_width_factor, 0.5, 20, Dimension::Dimensionless, false, false,
+            "the width of the failing band in initial smoothing lengths h0 = h_factor x spacing");
     return;
   }
   d.allow({"kind", "d1", "d2", "d3", "d4", "d5", "min_failure_strain", "pair_factor"});

@@ -45,10 +45,28 @@ IMPACTSPH_HD Real jh2_failure_strain(Real d1, Real d2, Real p_star, Real t_star,
   return max_of(power, min_failure_strain);
 }
 
+// Crack-band regularisation (Bazant and Oh 1983, "Crack band theory for fracture of concrete", Materiaux
+// et Constructions 16, 155-177): a criterion on a strain or a work density fails a band of material as wide
+// as the discretisation localises it in, so the energy per unit crack area it dissipates scales with the
+// spacing. Holding that energy at a material constant Gamma (J/m^2) over a band of width w = k h0 (k the
+// band width in initial smoothing lengths, measured, not fitted) fails a particle once its plastic work per
+// unit initial volume reaches
+//   W_c = Gamma / (k h0)   (J/m^3),
+// the critical work this returns (h0 in m). Production codes scale the failure measure with the element
+// size in the same way (LS-DYNA GISSMO and *MAT_ADD_EROSION with LCREGD, Radioss /FAIL element-size
+// functions, Abaqus damage evolution by plastic displacement).
+template <class Real>
+IMPACTSPH_HD Real fracture_energy_critical_work(const DamageParams<Real>& d, Real h0) {
+  return d.fracture_energy / (d.band_width_factor * h0);
+}
+
 // Damage increment of one step, to be added to D (the caller keeps D = min(D + increment, 1)):
 //   None: 0;
 //   CriticalPlasticStrain (F eq 4.9): 1 once the plastic strain after the step eps_p_after >= eps_c,
 //     else 0 (D jumps from 0 to 1; eps_c must be > 0, or the material fails at once);
+//   FractureEnergy (crack band, above): 1 once the plastic work per unit initial volume after the step,
+//     rho0 w_p_after (w_p_after in J/kg, the particle's accumulated sum sigma_y d eps_p / rho), reaches the
+//     critical work W_c = Gamma / (k h0), else 0 (D jumps from 0 to 1, as in F 4.9);
 //   JohnsonCook (F eq 4.8, X eq 32): d_eps_p / eps_f, eps_f of johnson_cook_failure_strain at the
 //     triaxiality -P/sigma_eq (P and sigma_eq in Pa), eps_dot* = max(eps_rate/eps_dot0, 1) with the
 //     strength model's reference rate, and T* from the strength model's melt temperature and the
@@ -57,10 +75,12 @@ IMPACTSPH_HD Real jh2_failure_strain(Real d1, Real d2, Real p_star, Real t_star,
 //     with the bulking increment) and the strength model's P_HEL and T. 1 when eps_f <= 0.
 // No damage without plastic flow (d_eps_p <= 0) in the JohnsonCook and JH-2 models. Dimensionless.
 template <class Real>
-IMPACTSPH_HD Real damage_increment(const MaterialParams<Real>& m, Real d_eps_p, Real eps_p_after, Real P, Real sigma_eq,
-                                   Real eps_rate, Real T) {
+IMPACTSPH_HD Real damage_increment(const MaterialParams<Real>& m, Real d_eps_p, Real eps_p_after, Real w_p_after, Real P,
+                                   Real sigma_eq, Real eps_rate, Real T) {
   if (m.damage.kind == DamageKind::CriticalPlasticStrain)
     return eps_p_after >= m.damage.critical_plastic_strain ? Real(1) : Real(0);
+  if (m.damage.kind == DamageKind::FractureEnergy)
+    return m.eos.rho0 * w_p_after >= m.damage.critical_plastic_work ? Real(1) : Real(0);
   if (!(d_eps_p > Real(0))) return Real(0);
   if (m.damage.kind == DamageKind::JohnsonHolmquist2) {
     const Real eps_f = jh2_failure_strain(m.damage.d1, m.damage.d2, P / m.strength.p_hel,

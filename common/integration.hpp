@@ -93,7 +93,7 @@ IMPACTSPH_HD void finish_step(const MaterialParams<Real>& mat, Real rho, Real en
   apply_failure(mat, S, pressure, damage);
   if (damage < Real(1)) {
     const Real d_old = damage;
-    const Real dd = damage_increment(mat, d_eps_p, plastic_strain, pressure, von_mises(S), strain_rate, temperature);
+    const Real dd = damage_increment(mat, d_eps_p, plastic_strain, plastic_work, pressure, von_mises(S), strain_rate, temperature);
     const Real d = damage + dd;
     damage = d < Real(1) ? d : Real(1);
     const Real bulking = jh2_bulking_increment(mat, rho, pressure, d_old, damage, strain_rate, dP_bulk);

@@ -19,7 +19,8 @@ enum class DamageKind : int {
   None = 0,
   CriticalPlasticStrain = 1,  // D = 1 once eps_p >= eps_c (F 4.9)
   JohnsonCook = 2,            // D = sum d eps_p / eps_f, eps_f of F 4.7 bounded below as X eq 33
-  JohnsonHolmquist2 = 3       // D = sum d eps_p / eps_f, eps_f = D1 (P* + T*)^D2 (X eqs 25-26), bulking
+  JohnsonHolmquist2 = 3,      // D = sum d eps_p / eps_f, eps_f = D1 (P* + T*)^D2 (X eqs 25-26), bulking
+  FractureEnergy = 4          // D = 1 once rho0 w_p x band width >= Gamma (crack band, damage.hpp)
 };
 
 template <class Real>
@@ -51,6 +52,13 @@ template <class Real>
 struct DamageParams {
   DamageKind kind = DamageKind::None;
   Real critical_plastic_strain = 0;          // eps_c (F 4.9)
+  // FractureEnergy (crack band; damage.hpp): the energy per unit crack area Gamma (J/m^2), the width of
+  // the band the failure localises in as a multiple of the initial smoothing length h0 (dimensionless),
+  // and the plastic work density at failure Gamma / (band_width_factor h0) (J/m^3), which the scene sets
+  // from its h0 (fracture_energy_critical_work).
+  Real fracture_energy = 0;
+  Real band_width_factor = 0;
+  Real critical_plastic_work = 0;
   Real d1 = 0, d2 = 0, d3 = 0, d4 = 0, d5 = 0;  // Johnson-Cook failure constants (F 4.7)
   Real min_failure_strain = 0;               // lower bound of eps_f (X eq 33; JH-2: EFMIN)
   // JH-2 uses d1, d2 as D1, D2 of X eq 26 and min_failure_strain; bulking is beta of X eq 28, the
@@ -93,6 +101,8 @@ template <class To, class From> MaterialParams<To> convert_material(const Materi
   const DamageParams<From>& d = m.damage;
   r.damage.kind = d.kind;
   r.damage.critical_plastic_strain = To(d.critical_plastic_strain);
+  r.damage.fracture_energy = To(d.fracture_energy); r.damage.band_width_factor = To(d.band_width_factor);
+  r.damage.critical_plastic_work = To(d.critical_plastic_work);
   r.damage.d1 = To(d.d1); r.damage.d2 = To(d.d2); r.damage.d3 = To(d.d3); r.damage.d4 = To(d.d4); r.damage.d5 = To(d.d5);
   r.damage.min_failure_strain = To(d.min_failure_strain);
   r.damage.bulking = To(d.bulking);

@@ -13,11 +13,12 @@ namespace impactsph {
 // Pass 1 sums of particle i (F 2.13, F 2.19).
 template <class Real>
 struct GradientSums {
-  Mat3<Real> L;      // correction matrix -sum V_j gw (x) x_ij, dimensionless
-  Mat3<Real> G;      // uncorrected velocity gradient sum V_j (v_j - v_i) (x) gw, 1/s
-  Vec3<Real> grad_rho;  // uncorrected density gradient sum V_j (rho_j - rho_i) gw, kg/m^4
+  Mat3<Real> L;          // correction matrix -sum V_j gw (x) x_ij, dimensionless
+  Mat3<Real> L_damaged;  // the same with each pair scaled by 1 - D_ij, dimensionless
+  Mat3<Real> G;          // uncorrected velocity gradient sum (1 - D_ij) V_j (v_j - v_i) (x) gw, 1/s
+  Vec3<Real> grad_rho;   // uncorrected density gradient sum (1 - D_ij) V_j (rho_j - rho_i) gw, kg/m^4
   IMPACTSPH_HD static GradientSums zero() {
-    return {Mat3<Real>::zero(), Mat3<Real>::zero(), Vec3<Real>{Real(0), Real(0), Real(0)}};
+    return {Mat3<Real>::zero(), Mat3<Real>::zero(), Mat3<Real>::zero(), Vec3<Real>{Real(0), Real(0), Real(0)}};
   }
 };
 
@@ -26,19 +27,26 @@ struct GradientSums {
 // 1 for an intact pair). F 4.10 scales the kernel gradient of every interaction, so the velocity and
 // density gradients take it as the momentum and energy rates do: the continuity equation of a failed particle then sees the neighbours it still
 // exchanges forces with, and an intact particle beside a crack does not strain with the fragments
-// flying off it. The correction matrix is built from the unscaled gradient (F's W-hat is the corrected
-// kernel that 4.10 then scales; a scaled L would cancel the scaling in L^-1).
+// flying off it. Two correction matrices are summed: L from the unscaled gradient, for the momentum and
+// energy rates (F's W-hat is the corrected kernel that 4.10 then scales; a scaled L there would cancel the
+// scaling in L^-1), and L_damaged from the scaled one, for the gradients, whose sums it then corrects
+// consistently: a linear field is differentiated exactly over the pairs that still interact, and a rigid
+// rotation beside a failed layer has no strain rate (with the unscaled L it had a deviatoric rate of about
+// 0.08 omega). For an intact neighbourhood the two are the same bits.
 template <class Real>
 IMPACTSPH_HD void add_gradient_pair(GradientSums<Real>& s, Real vol_j, Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> v_ji,
                                     Real drho_ji, Real damage_i, Real damage_j) {
   accumulate_correction(s.L, vol_j, gw, xij);
   const Real vf = damaged_pair_factor(damage_i, damage_j) * vol_j;
+  accumulate_correction(s.L_damaged, vf, gw, xij);
   s.G = s.G + vf * outer(v_ji, gw);
   s.grad_rho += (vf * drho_ji) * gw;
 }
 
-// Pass 1 result: L^-1 (or the identity on fallback), the corrected velocity gradient
-// grad v = sum V_j (v_j - v_i) (x) L^-1 gw (1/s) and the renormalised density gradient L^-1 sum (kg/m^4).
+// Pass 1 result: L^-1 (or the identity on fallback) for pass 2, the corrected velocity gradient
+// grad v = sum (1 - D_ij) V_j (v_j - v_i) (x) L_d^-1 gw (1/s) and the renormalised density gradient
+// L_d^-1 sum (kg/m^4), L_d the damaged correction matrix. Where L_d is ill-conditioned (a particle among
+// failed ones, whose scaled sums are mostly zero) the gradients take L^-1 instead; fell_back counts L only.
 template <class Real>
 struct CorrectedGradients {
   Mat3<Real> l_inverse;
@@ -50,8 +58,14 @@ template <class Real>
 IMPACTSPH_HD CorrectedGradients<Real> corrected_gradients(const GradientSums<Real>& s, const CorrectionParams<Real>& p) {
   CorrectedGradients<Real> r;
   r.l_inverse = correction_inverse(s.L, p, r.fell_back);
-  r.grad_v = s.G * r.l_inverse.transpose();
-  r.grad_rho = r.l_inverse * s.grad_rho;
+  Mat3<Real> gradient_inverse = r.l_inverse;
+  if (!exactly_equal(s.L_damaged, s.L)) {
+    bool damaged_fell_back = true;
+    const Mat3<Real> inv = correction_inverse(s.L_damaged, p, damaged_fell_back);
+    if (!damaged_fell_back) gradient_inverse = inv;
+  }
+  r.grad_v = s.G * gradient_inverse.transpose();
+  r.grad_rho = gradient_inverse * s.grad_rho;
   return r;
 }
 

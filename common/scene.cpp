@@ -34,6 +34,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/damage.hpp"
 #include "common/errors.hpp"
 #include "common/mesh_solid.hpp"
 #include "common/scene.hpp"
@@ -802,7 +803,15 @@ Scene build_scene(const CaseSpec& spec) {
 
   Scene scene;
   scene.spec = spec;
-  for (const MaterialSpec& m : spec.materials) scene.materials.push_back(m.params);
+  // A fracture-energy criterion fails at Gamma / (k h0): its critical work is set here from the case's
+  // initial smoothing length h0 = h_factor x spacing (damage.hpp, fracture_energy_critical_work).
+  for (const MaterialSpec& m : spec.materials) {
+    MaterialParams<double> params = m.params;
+    if (params.damage.kind == DamageKind::FractureEnergy)
+      params.damage.critical_plastic_work =
+          fracture_energy_critical_work(params.damage, spec.numerics.h_factor * spec.numerics.spacing);
+    scene.materials.push_back(params);
+  }
 
   // Lattices first, so that the symmetry planes can be decided from every body and clip them.
   std::vector<BodyLattice> lattices(spec.bodies.size());

@@ -38,6 +38,14 @@ struct Mat3 {
   }
 };
 
+// Every entry equal (==; a NaN entry makes two matrices unequal).
+template <class Real> IMPACTSPH_HD bool exactly_equal(const Mat3<Real>& a, const Mat3<Real>& b) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (!(a.m[i][j] == b.m[i][j])) return false;
+  return true;
+}
+
 template <class Real> IMPACTSPH_HD Mat3<Real> operator+(const Mat3<Real>& a, const Mat3<Real>& b) {
   Mat3<Real> r;
   for (int i = 0; i < 3; ++i)

@@ -36,6 +36,7 @@ constexpr Dim kSpecificEnergy{0, 2, -2, 0};
 constexpr Dim kEnergy{1, 2, -2, 0};
 constexpr Dim kForce{1, 1, -2, 0};
 constexpr Dim kStrainRate{0, 0, -1, 0};
+constexpr Dim kFractureEnergy{1, 0, -2, 0};
 
 Dim dim_of(Dimension d) {
   switch (d) {
@@ -50,6 +51,7 @@ Dim dim_of(Dimension d) {
     case Dimension::Temperature: return kTemperature;
     case Dimension::SpecificEnergy: return kSpecificEnergy;
     case Dimension::StrainRate: return kStrainRate;
+    case Dimension::FractureEnergy: return kFractureEnergy;
   }
   return kNone;
 }
@@ -113,7 +115,8 @@ std::string describe(Dim d) {
       {kSpecificEnergy, "a specific energy"}, {kEnergy, "an energy"},
       {kForce, "a force"},            {{0, 2, 0, 0}, "an area"},
       {{0, 3, 0, 0}, "a volume"},     {{0, 1, -2, 0}, "an acceleration"},
-      {kStrainRate, "a rate (1/s)"}, {kNone, "a bare number"},
+      {kStrainRate, "a rate (1/s)"}, {kFractureEnergy, "an energy per unit area (J/m^2)"},
+      {kNone, "a bare number"},
   };
   for (const Named& n : kNamed)
     if (n.dim == d) return n.name;
@@ -344,6 +347,7 @@ std::string dimension_name(Dimension d) {
     case Dimension::Temperature: return "temperature";
     case Dimension::SpecificEnergy: return "specific energy";
     case Dimension::StrainRate: return "strain rate";
+    case Dimension::FractureEnergy: return "fracture energy";
   }
   return "quantity";
 }
@@ -361,6 +365,7 @@ std::string dimension_example(Dimension d) {
     case Dimension::Temperature: return "293 K";
     case Dimension::SpecificEnergy: return "1e5 J/kg";
     case Dimension::StrainRate: return "1 /s";
+    case Dimension::FractureEnergy: return "200 kJ/m^2";
   }
   return "";
 }
@@ -378,6 +383,7 @@ std::string dimension_units(Dimension d) {
     case Dimension::Temperature: return "K, absolute; a bare number is K";
     case Dimension::SpecificEnergy: return "J/kg, kJ/kg, MJ/kg; a bare number is J/kg";
     case Dimension::StrainRate: return "1/s, /s, s^-1, 1/ms, 1/us; a bare number is 1/s";
+    case Dimension::FractureEnergy: return "J/m^2, kJ/m^2, MJ/m^2, N/m, N/mm; a bare number is J/m^2";
   }
   return "";
 }
@@ -437,6 +443,10 @@ std::string format_quantity(double v, Dimension d) {
     case Dimension::Temperature: unit = "K"; break;
     case Dimension::SpecificEnergy: unit = "J/kg"; break;
     case Dimension::StrainRate: unit = "/s"; break;
+    case Dimension::FractureEnergy:
+      if (a >= 1e3) scale = 1e3, unit = "kJ/m^2";
+      else unit = "J/m^2";
+      break;
   }
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", v / scale);

@@ -24,6 +24,7 @@ enum class Dimension {
   SpecificHeat,    // J/(kg K)
   Temperature,     // K (absolute only: no degrees Celsius, whose zero is offset)
   SpecificEnergy,  // J/kg
+  FractureEnergy,  // J/m^2 (energy per unit crack area; also N/m)
   StrainRate       // 1/s (written "1/s", "/s" or "s^-1": "1e-3 /s", "1 1/s", "1 s^-1")
 };
 

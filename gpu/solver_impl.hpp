@@ -114,27 +114,29 @@ struct MaxOf {
   template <class T> IMPACTSPH_GPU_HD T operator()(T a, T b) const { return a > b ? a : b; }
 };
 
-// The pass 1 sums of a particle as plain Reals, the form IMPACTSPH_SIMD_SUMS reduces: L, G (row-major)
-// and the density gradient.
-constexpr int kGradientSums = 21;
+// The pass 1 sums of a particle as plain Reals, the form IMPACTSPH_SIMD_SUMS reduces: L, L_damaged, G
+// (row-major) and the density gradient.
+constexpr int kGradientSums = 30;
 template <class Real> IMPACTSPH_GPU_HD inline void add_flat(Real* sum, const GradientSums<Real>& g) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
       sum[3 * r + c] += g.L.m[r][c];
-      sum[9 + 3 * r + c] += g.G.m[r][c];
+      sum[9 + 3 * r + c] += g.L_damaged.m[r][c];
+      sum[18 + 3 * r + c] += g.G.m[r][c];
     }
-  sum[18] += g.grad_rho.x;
-  sum[19] += g.grad_rho.y;
-  sum[20] += g.grad_rho.z;
+  sum[27] += g.grad_rho.x;
+  sum[28] += g.grad_rho.y;
+  sum[29] += g.grad_rho.z;
 }
 template <class Real> IMPACTSPH_GPU_HD inline GradientSums<Real> unflatten_gradient_sums(const Real* sum) {
   GradientSums<Real> g;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
       g.L.m[r][c] = sum[3 * r + c];
-      g.G.m[r][c] = sum[9 + 3 * r + c];
+      g.L_damaged.m[r][c] = sum[9 + 3 * r + c];
+      g.G.m[r][c] = sum[18 + 3 * r + c];
     }
-  g.grad_rho = Vec3<Real>{sum[18], sum[19], sum[20]};
+  g.grad_rho = Vec3<Real>{sum[27], sum[28], sum[29]};
   return g;
 }
 

@@ -512,7 +512,7 @@ TEST(CaseFileErrors, UnknownKindsListValidOnes) {
   expect_error(t, "numerics.kernel", "\"wendland-c2\", \"cubic-spline\"", -1);
   t = with("specific_heat", "damage = { kind = \"gurson\" }\nspecific_heat");
   expect_error(t, "materials.copper.damage.kind",
-               "valid: \"none\", \"critical-plastic-strain\", \"johnson-cook\"", line_of(t, "gurson"));
+               "valid: \"none\", \"critical-plastic-strain\", \"fracture-energy\", \"johnson-cook\"", line_of(t, "gurson"));
   t = with("kind = \"elastic\"", "kind = \"johnson_cook\"");
   expect_error(t, "materials.steel.strength.kind", "did you mean \"johnson-cook\"?", -1);
   t = kBase + "\n[[contacts]]\nbodies = [\"plate\", \"projectile\"]\nkind = \"penality\"\n";
@@ -950,6 +950,16 @@ TEST(CaseFileMaterials, DamageErrors) {
       {"kind = \"critical-plastic-strain\", critical_plastic_strain = 11", k + "critical_plastic_strain", "at most 10"},
       {"kind = \"critical-plastic-strain\"", k + "critical_plastic_strain", "missing in the damage model"},
       {"kind = \"critical-plastic-strain\", critical_plastic_strain = 0.3, d1 = 1", k + "d1", "unknown key"},
+      {"kind = \"fracture-energy\", band_width_factor = 2.3", k + "fracture_energy", "missing in the damage model"},
+      {"kind = \"fracture-energy\", fracture_energy = \"0 kJ/m^2\", band_width_factor = 2.3", k + "fracture_energy",
+       "greater than 0 J/m^2"},
+      {"kind = \"fracture-energy\", fracture_energy = \"150 MPa\", band_width_factor = 2.3", k + "fracture_energy",
+       "is a pressure"},
+      {"kind = \"fracture-energy\", fracture_energy = \"150 kJ/m^2\"", k + "band_width_factor", "missing in the damage model"},
+      {"kind = \"fracture-energy\", fracture_energy = \"150 kJ/m^2\", band_width_factor = 0.2", k + "band_width_factor",
+       "initial smoothing lengths"},
+      {"kind = \"fracture-energy\", fracture_energy = \"150 kJ/m^2\", band_width_factor = 2, critical_plastic_strain = 0.3",
+       k + "critical_plastic_strain", "unknown key"},
       {jc + "d1 = -1.5, d2 = 1, d3 = -1", k + "d1", "at least -1"},
       {jc + "d1 = 21, d2 = 1, d3 = -1", k + "d1", "at most 20"},
       {jc + "d1 = 0.1, d2 = -0.1, d3 = -1", k + "d2", "at least 0"},

@@ -103,10 +103,10 @@ TEST(Jh2, FailureStrainAndDamageGrowth) {
   EXPECT_EQ(jh2_failure_strain(0.005, 1.0, -0.2 / 1.46, 0.2 / 1.46, 0.0), 0.0);
   EXPECT_EQ(jh2_failure_strain(0.005, 1.0, -0.3 / 1.46, 0.2 / 1.46, 0.01), 0.01);
   // X eq 25: D grows by d_eps_p / eps_f.
-  const double dD = damage_increment(m, 1e-4, 1e-4, 1e9, 1e9, 0.0, 293.0);
+  const double dD = damage_increment(m, 1e-4, 1e-4, 0.0, 1e9, 1e9, 0.0, 293.0);
   EXPECT_NEAR(dD, 1e-4 / 0.00410958904109589, 1e-12);
-  EXPECT_EQ(damage_increment(m, 0.0, 0.0, 1e9, 1e9, 0.0, 293.0), 0.0);  // no flow, no damage
-  EXPECT_EQ(damage_increment(m, 1e-6, 1e-6, -0.3e9, 1e9, 0.0, 293.0), 1.0);  // beyond the tensile limit
+  EXPECT_EQ(damage_increment(m, 0.0, 0.0, 0.0, 1e9, 1e9, 0.0, 293.0), 0.0);  // no flow, no damage
+  EXPECT_EQ(damage_increment(m, 1e-6, 1e-6, 0.0, -0.3e9, 1e9, 0.0, 293.0), 1.0);  // beyond the tensile limit
 }
 
 TEST(Jh2, TensilePressureLimitFallsWithDamage) {
@@ -263,7 +263,7 @@ TEST(Jh2Analytic, CompressionPastTheHelDamagesAndBulks) {
     const PlasticResult<double> r = plastic_update(m, S, eps_p, rate, 293.0, rho, D, P);
     eps_p += r.d_eps_p;
     const double D_old = D;
-    D = std::min(1.0, D + damage_increment(m, r.d_eps_p, eps_p, P, von_mises(S), rate, 293.0));
+    D = std::min(1.0, D + damage_increment(m, r.d_eps_p, eps_p, 0.0, P, von_mises(S), rate, 293.0));
     dP = jh2_bulking_increment(m, rho, P, D_old, D, rate, dP);
   }
   EXPECT_EQ(D, 1.0);

@@ -15,6 +15,7 @@
 #include <type_traits>
 
 #include "common/damage.hpp"
+#include "common/kernels.hpp"
 #include "common/material.hpp"
 #include "common/pair_terms.hpp"
 
@@ -103,20 +104,20 @@ TYPED_TEST(DamageTyped, DamageIncrementPerModel) {
   m.room_temperature = Real(293);
   // None: never.
   m.damage.kind = DamageKind::None;
-  EXPECT_EQ(damage_increment(m, Real(0.5), Real(5), Real(-1e9), Real(1e8), Real(1e4), Real(293)), Real(0));
+  EXPECT_EQ(damage_increment(m, Real(0.5), Real(5), Real(0), Real(-1e9), Real(1e8), Real(1e4), Real(293)), Real(0));
   // Critical plastic strain, Weldox target eps_c = 0.3 (F Table 2): D jumps to 1 at eps_p >= eps_c.
   m.damage.kind = DamageKind::CriticalPlasticStrain;
   m.damage.critical_plastic_strain = Real(0.3);
-  EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.29), Real(0), Real(5e8), Real(1e3), Real(293)), Real(0));
-  EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.3), Real(0), Real(5e8), Real(1e3), Real(293)), Real(1));
-  EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.31), Real(0), Real(5e8), Real(1e3), Real(293)), Real(1));
+  EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.29), Real(0), Real(0), Real(5e8), Real(1e3), Real(293)), Real(0));
+  EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.3), Real(0), Real(0), Real(5e8), Real(1e3), Real(293)), Real(1));
+  EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.31), Real(0), Real(0), Real(5e8), Real(1e3), Real(293)), Real(1));
   // Johnson-Cook, tungsten (X Table 2): d_eps_p / eps_f; at sigma* = 1/3 (P = -100 MPa, sigma_eq = 300 MPa)
   // an increment of 0.01 gives 0.01/0.200155117705169 = 0.0499612506272766.
   m.damage = tungsten_failure<Real>();
   m.strength.reference_strain_rate = Real(1);
-  EXPECT_NEAR(double(damage_increment(m, Real(0.01), Real(0.2), Real(-100e6), Real(300e6), Real(1e3), Real(293))),
+  EXPECT_NEAR(double(damage_increment(m, Real(0.01), Real(0.2), Real(0), Real(-100e6), Real(300e6), Real(1e3), Real(293))),
               0.0499612506272766105, 10 * rel_tol<Real>());
-  EXPECT_EQ(damage_increment(m, Real(0), Real(0.2), Real(-100e6), Real(300e6), Real(1e3), Real(293)), Real(0));
+  EXPECT_EQ(damage_increment(m, Real(0), Real(0.2), Real(0), Real(-100e6), Real(300e6), Real(1e3), Real(293)), Real(0));
   // Rate and temperature reach the failure strain through the material (made-up constants as above):
   // eps_dot = 5 1/s over eps_dot0 = 5e-4 gives eps* = 1e4; T = 293 + 0.4 x 1507 K gives T* = 0.4.
   m.damage.d1 = Real(0.05);
@@ -126,13 +127,13 @@ TYPED_TEST(DamageTyped, DamageIncrementPerModel) {
   m.damage.d5 = Real(0.6);
   m.strength.reference_strain_rate = Real(5e-4);
   m.strength.melt_temperature = Real(1800);
-  EXPECT_NEAR(double(damage_increment(m, Real(0.01), Real(0.2), Real(0.2 * 300e6), Real(300e6), Real(5),
+  EXPECT_NEAR(double(damage_increment(m, Real(0.01), Real(0.2), Real(0), Real(0.2 * 300e6), Real(300e6), Real(5),
                                       Real(293 + 0.4 * 1507))),
               0.01 / 1.00678239867388747, 100 * rel_tol<Real>());
   // Unphysical constants with no minimum: eps_f <= 0 fails the particle at its first plastic step.
   m.damage.d1 = Real(-1);
   m.damage.d2 = Real(0);
-  EXPECT_EQ(damage_increment(m, Real(1e-6), Real(1e-6), Real(0), Real(1e8), Real(1), Real(293)), Real(1));
+  EXPECT_EQ(damage_increment(m, Real(1e-6), Real(1e-6), Real(0), Real(0), Real(1e8), Real(1), Real(293)), Real(1));
 }
 
 // Under a constant triaxiality (proportional loading) the Johnson-Cook damage reaches 1 when the plastic
@@ -146,7 +147,7 @@ TEST(Damage, JohnsonCookDamageReachesOneAtFailureStrain) {
   int k = 0;
   for (; k < 2000 && D < 1 - 1e-9; ++k) {
     eps_p += dep;
-    D = std::min(1.0, D + damage_increment(m, dep, eps_p, -100e6, 300e6, 1e3, 293.0));
+    D = std::min(1.0, D + damage_increment(m, dep, eps_p, 0.0, -100e6, 300e6, 1e3, 293.0));
   }
   EXPECT_EQ(k, 1000);
   EXPECT_NEAR(eps_p, ef, 1e-12);
@@ -189,8 +190,9 @@ TYPED_TEST(DamageTyped, DamagedPairFactor) {
 }
 
 // F 4.10 scales the kernel gradient of every interaction: a pair's share of the velocity and density
-// gradient sums scales with 1 - D_ij, its share of the correction matrix does not (so that L^-1 does not
-// undo the scaling). A failed pair (factor 0) adds to L only.
+// gradient sums scales with 1 - D_ij, and so does its share of the damaged correction matrix that corrects
+// them; its share of L (for pass 2, so that L^-1 does not undo the scaling there) does not. A failed pair
+// (factor 0) adds to L only.
 TYPED_TEST(DamageTyped, GradientPairScalesWithDamageFactor) {
   using Real = TypeParam;
   const Real vol = Real(1.25e-9);
@@ -210,6 +212,9 @@ TYPED_TEST(DamageTyped, GradientPairScalesWithDamageFactor) {
       EXPECT_NE(intact.G.m[a][b], Real(0));
       EXPECT_NEAR(half.G.m[a][b], Real(0.5) * intact.G.m[a][b], tol * std::abs(intact.G.m[a][b]));
       EXPECT_EQ(failed.G.m[a][b], Real(0));
+      EXPECT_EQ(intact.L_damaged.m[a][b], intact.L.m[a][b]);
+      EXPECT_NEAR(half.L_damaged.m[a][b], Real(0.5) * intact.L.m[a][b], tol * std::abs(intact.L.m[a][b]));
+      EXPECT_EQ(failed.L_damaged.m[a][b], Real(0));
     }
     EXPECT_NEAR(half.grad_rho[a], Real(0.5) * intact.grad_rho[a], tol * std::abs(intact.grad_rho[a]));
     EXPECT_EQ(failed.grad_rho[a], Real(0));
@@ -234,3 +239,143 @@ TYPED_TEST(DamageTyped, DeltaSphPairScalesWithDamageFactor) {
 }
 
 }  // namespace
+
+// A particle beside a failed layer (pair_terms.hpp, add_gradient_pair): on a cubic lattice (spacing dx,
+// h = 1.2 dx, Wendland C2) the particles at z >= dx above particle i have failed (D = 1), so its pairs with
+// them count half. Corrected with the damaged correction matrix, the gradient of a linear velocity field
+// v = A x + b is A, and a rigid rotation (A = [omega]x) has no strain rate. The unscaled L, which corrected
+// the gradient before, gives the rotation a deviatoric rate of several percent of omega: the test checks
+// that this configuration does expose it.
+namespace {
+struct LatticeGradients {
+  Mat3<double> consistent, unscaled;
+};
+LatticeGradients gradient_beside_failed_layer(const Mat3<double>& A, int failed_from_layer) {
+  const double dx = 1e-3, h = 1.2 * dx, vol = dx * dx * dx;
+  const Vec3<double> b{3.0, -2.0, 1.0};
+  const auto velocity = [&](Vec3<double> x) { return A * x + b; };
+  const Vec3<double> xi{0.1 * dx, -0.2 * dx, 0.05 * dx};  // off the lattice's symmetry
+  GradientSums<double> sums = GradientSums<double>::zero();
+  for (int a = -3; a <= 3; ++a)
+    for (int c = -3; c <= 3; ++c)
+      for (int k = -3; k <= 3; ++k) {
+        if (a == 0 && c == 0 && k == 0) continue;
+        const Vec3<double> xj = xi + Vec3<double>{a * dx, c * dx, k * dx};
+        const Vec3<double> xij = xi - xj;
+        const double r = norm(xij);
+        if (!(r < kernel_support(h))) continue;
+        const Vec3<double> gw = kernel_grad_factor_of<KernelKind::WendlandC2>(r, h) * xij;
+        const double dj = k >= failed_from_layer ? 1.0 : 0.0;
+        add_gradient_pair(sums, vol, gw, xij, velocity(xj) - velocity(xi), 0.0, 0.0, dj);
+      }
+  LatticeGradients g;
+  g.consistent = corrected_gradients(sums, CorrectionParams<double>{}).grad_v;
+  bool fell_back = true;
+  g.unscaled = sums.G * correction_inverse(sums.L, CorrectionParams<double>{}, fell_back).transpose();
+  EXPECT_FALSE(fell_back);
+  return g;
+}
+double deviatoric_rate_norm(const Mat3<double>& grad_v) {
+  const Mat3<double> d = 0.5 * (grad_v + grad_v.transpose());
+  const double m = d.trace() / 3;
+  double s = 0;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) {
+      const double e = d.m[r][c] - (r == c ? m : 0.0);
+      s += e * e;
+    }
+  return std::sqrt(s);
+}
+}  // namespace
+
+TEST(DamagedGradient, RigidRotationBesideFailedLayerHasNoStrainRate) {
+  const double omega = 1e4;  // 1/s, about z and x
+  Mat3<double> A = Mat3<double>::zero();
+  A.m[0][1] = -omega; A.m[1][0] = omega;
+  A.m[1][2] = -0.5 * omega; A.m[2][1] = 0.5 * omega;
+  const LatticeGradients g = gradient_beside_failed_layer(A, 1);
+  EXPECT_LT(deviatoric_rate_norm(g.consistent), 1e-10 * omega);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(g.consistent.m[r][c], A.m[r][c], 1e-10 * omega);
+  EXPECT_GT(deviatoric_rate_norm(g.unscaled), 0.01 * omega);
+}
+
+TEST(DamagedGradient, LinearFieldExactAtIntactParticleBesideFailedLayer) {
+  Mat3<double> A = Mat3<double>::zero();
+  const double rows[3][3] = {{2e3, -5e2, 7e2}, {1e2, -3e3, 4e2}, {-6e2, 8e2, 1.5e3}};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) A.m[r][c] = rows[r][c];
+  for (int layer : {1, 2, 4}) {  // 4: no neighbour has failed (the support is 2.4 dx)
+    const LatticeGradients g = gradient_beside_failed_layer(A, layer);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(g.consistent.m[r][c], A.m[r][c], 1e-10 * 3e3) << "layer " << layer;
+  }
+}
+
+// Crack-band criterion (damage.hpp): W_c = Gamma / (k h0), and D jumps to 1 once rho0 w_p reaches it.
+TEST(FractureEnergy, FailsAtCriticalWorkOfBandWidth) {
+  MaterialParams<double> m;
+  m.eos.rho0 = 7850;
+  m.damage.kind = DamageKind::FractureEnergy;
+  m.damage.fracture_energy = 2.0e5;   // J/m^2
+  m.damage.band_width_factor = 2.0;   // band of 2 h0
+  const double h0 = 1.2e-3;
+  m.damage.critical_plastic_work = fracture_energy_critical_work(m.damage, h0);
+  EXPECT_NEAR(m.damage.critical_plastic_work, 2.0e5 / (2.0 * 1.2e-3), 1e-6);
+  const double w_c = m.damage.critical_plastic_work / m.eos.rho0;  // J/kg
+  EXPECT_EQ(damage_increment(m, 0.01, 0.5, 0.999 * w_c, 0.0, 5e8, 1e3, 293.0), 0.0);
+  EXPECT_EQ(damage_increment(m, 0.01, 0.5, w_c, 0.0, 5e8, 1e3, 293.0), 1.0);
+  // Halving h0 doubles the work density at failure: the energy per unit area, W_c k h0, stays Gamma.
+  EXPECT_NEAR(fracture_energy_critical_work(m.damage, 0.5 * h0) * m.damage.band_width_factor * 0.5 * h0, 2.0e5, 1e-6);
+}
+
+// At the spacing where Gamma = W_p(eps_c) k h0, the fracture-energy criterion fails a particle on the same
+// step as the critical plastic strain eps_c = 0.3 (F 4.9): Weldox 460 E (F Table 2) in uniaxial-like
+// straining at 1e4 /s, elastic predictor and radial return of plastic_update, finish_step's sums.
+TEST(FractureEnergy, ReducesToCriticalPlasticStrainAtTheMatchingGamma) {
+  MaterialParams<double> m;
+  m.eos.kind = EosKind::MieGruneisen;
+  m.eos.rho0 = 7850; m.eos.c0 = 5047.6; m.eos.s1 = 1.5; m.eos.gamma0 = 2.0;
+  m.strength.kind = StrengthKind::JohnsonCook;
+  m.strength.shear_modulus = 200e9 / (2 * 1.33);
+  m.strength.jc_a = 490e6; m.strength.jc_b = 807e6; m.strength.jc_n = 0.73; m.strength.jc_c = 0.0114;
+  m.strength.reference_strain_rate = 5e-4;
+  const double rate = 1e4, dt = 2e-8;
+  // One strain path, returning the step on which each model fails and the work at eps_p = 0.3.
+  const auto first_failure = [&](const MaterialParams<double>& mat, double& w_at_eps_c) {
+    Sym3<double> S = Sym3<double>::zero();
+    double eps_p = 0, w_p = 0, D = 0;
+    w_at_eps_c = 0;
+    for (int step = 1; step < 200000; ++step) {
+      Sym3<double> dS = Sym3<double>::zero();
+      dS.xx = 2 * mat.strength.shear_modulus * rate * dt * (2.0 / 3.0);
+      dS.yy = dS.zz = -0.5 * dS.xx;
+      S = S + dS;
+      const PlasticResult<double> pr = plastic_update(mat, S, eps_p, rate, 293.0, m.eos.rho0, D, 0.0);
+      eps_p += pr.d_eps_p;
+      w_p += pr.plastic_work;
+      if (w_at_eps_c == 0 && eps_p >= 0.3) w_at_eps_c = w_p;
+      D = std::min(1.0, D + damage_increment(mat, pr.d_eps_p, eps_p, w_p, 0.0, von_mises(S), rate, 293.0));
+      if (D >= 1) return step;
+    }
+    return -1;
+  };
+  MaterialParams<double> critical = m;
+  critical.damage.kind = DamageKind::CriticalPlasticStrain;
+  critical.damage.critical_plastic_strain = 0.3;
+  double w_c = 0;
+  const int step_critical = first_failure(critical, w_c);
+  ASSERT_GT(step_critical, 0);
+  ASSERT_GT(w_c, 0);
+  const double h0_2mm = 1.2 * 2e-3;
+  MaterialParams<double> band = m;
+  band.damage.kind = DamageKind::FractureEnergy;
+  band.damage.band_width_factor = 2.0;
+  band.damage.fracture_energy = m.eos.rho0 * w_c * band.damage.band_width_factor * h0_2mm;
+  band.damage.critical_plastic_work = fracture_energy_critical_work(band.damage, h0_2mm);
+  double unused = 0;
+  EXPECT_EQ(first_failure(band, unused), step_critical);
+  // At 1 mm the same Gamma asks for twice the work: the particle fails later, at a larger plastic strain.
+  band.damage.critical_plastic_work = fracture_energy_critical_work(band.damage, 0.5 * h0_2mm);
+  EXPECT_GT(first_failure(band, unused), step_critical);
+}

@@ -83,6 +83,9 @@ TEST(Units, ThermalQuantities) {
   expect_si("293 K", Dimension::Temperature, 293);
   expect_si("1e5 J/kg", Dimension::SpecificEnergy, 1e5);
   expect_si("2 MJ/kg", Dimension::SpecificEnergy, 2e6);
+  expect_si("150 kJ/m^2", Dimension::FractureEnergy, 1.5e5);
+  expect_si("150 N/mm", Dimension::FractureEnergy, 1.5e5);
+  expect_si("20 J/m^2", Dimension::FractureEnergy, 20);
   expect_si("0.3", Dimension::Dimensionless, 0.3);
 }
 
@@ -114,7 +117,8 @@ TEST(Units, StrainRates) {
 TEST(Units, EveryExampleParsesAsItsDimension) {
   for (Dimension d : {Dimension::Dimensionless, Dimension::Length, Dimension::Velocity, Dimension::Time,
                       Dimension::Pressure, Dimension::Density, Dimension::Mass, Dimension::SpecificHeat,
-                      Dimension::Temperature, Dimension::SpecificEnergy, Dimension::StrainRate}) {
+                      Dimension::Temperature, Dimension::SpecificEnergy, Dimension::StrainRate,
+                      Dimension::FractureEnergy}) {
     EXPECT_NO_THROW(parse_quantity(impactsph::dimension_example(d), d)) << impactsph::dimension_name(d);
     EXPECT_FALSE(impactsph::dimension_name(d).empty());
   }

@@ -7,11 +7,21 @@ spacing enters").
 For each frame of the run (particles.pvd; run without output.vtu=false) it prints the time, the plug's
 displacement against the plate (mean axial position of the plate particles within half the projectile
 radius of the axis, against those of a ring 1.4-1.6 radii out), the projectile's nose, the number of
-failed plate particles (D >= 0.99), and the equivalent plastic strain of the plate particles in the band
-0.9-1.1 radii from the axis (mean and largest). The axis is the line x = y = 0 along z (the plate cases'
-quarter models); the target is body 0 and the projectile body 1, the order of the case's [[bodies]].
-Standard library only.
+failed plate particles (D >= 0.99), the equivalent plastic strain of the plate particles in the band
+0.9-1.1 radii from the axis (mean and largest), and the band's width.
+
+The band width is the energy width of the radial profile of the plastic work density W = rho0 w_p
+(J/m^3) across the band: W is averaged in rings dx/2 wide within 5 dx of the projectile's radius (dx the
+lattice spacing, read from the particle masses), the mean of the two outermost rings on each side is the
+background, and the width is the area under the profile above it divided by its peak above it,
+  w = sum_rings (W_ring - W_bg) dx/2 / (W_peak - W_bg),
+printed in mm and in initial smoothing lengths h0 = h_factor dx (h_factor from the run's run.json, else
+1.2). It is the width the crack-band criterion assumes (common/damage.hpp): a band that dissipates
+Gamma per unit area fails where its peak reaches Gamma / w. The axis is the line x = y = 0 along z (the
+plate cases' quarter models); the target is body 0 and the projectile body 1, the order of the case's
+[[bodies]]. Standard library only.
 """
+import json
 import math
 import os
 import re
@@ -30,10 +40,16 @@ def main():
     if not os.path.exists(pvd_path):
         sys.exit('shear_band.py: no %s; run the case without --set output.vtu=false' % pvd_path)
     frames = re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"', open(pvd_path).read())
-    print('%8s %12s %10s %7s %10s %9s' % ('t [us]', 'plug dz [mm]', 'nose [mm]', 'failed', 'band eps', 'band max'))
+    h_factor = 1.2
+    run_json = os.path.join(run, 'run.json')
+    if os.path.exists(run_json):
+        h_factor = json.load(open(run_json)).get('numerics', {}).get('h_factor', h_factor)
+    print('%8s %12s %10s %7s %10s %9s %10s %8s' % ('t [us]', 'plug dz [mm]', 'nose [mm]', 'failed', 'band eps',
+                                                  'band max', 'width [mm]', 'width/h0'))
     for t, name in frames:
         a = read_vtu(os.path.join(run, name))
         pos, body, damage, eps = a['Points'], a['body_id'], a['damage'], a['plastic_strain']
+        width, dx = band_width(a, radius)
         centre, ring, band, failed, nose = [], [], [], 0, math.inf
         for k, p in enumerate(pos):
             if body[k] == 1:
@@ -51,9 +67,35 @@ def main():
             if damage[k] >= 0.99:
                 failed += 1
         dz = sum(ring) / len(ring) - sum(centre) / len(centre) if centre and ring else float('nan')
-        print('%8.1f %12.2f %10.2f %7d %10.3f %9.3f' % (float(t) * 1e6, dz * 1e3, nose * 1e3, failed,
-                                                      sum(band) / len(band) if band else float('nan'),
-                                                      max(band) if band else float('nan')))
+        print('%8.1f %12.2f %10.2f %7d %10.3f %9.3f %10.2f %8.2f' % (
+            float(t) * 1e6, dz * 1e3, nose * 1e3, failed, sum(band) / len(band) if band else float('nan'),
+            max(band) if band else float('nan'), width * 1e3, width / (h_factor * dx)))
+
+
+def band_width(a, radius):
+    """The energy width (m) of the plastic work profile across the band at `radius`, and the spacing (m)."""
+    pos, body, mass, rho, work = a['Points'], a['body_id'], a['mass'], a['density'], a['plastic_work']
+    volumes = sorted(mass[k] / rho[k] for k in range(len(pos)) if body[k] == 0)
+    dx = volumes[len(volumes) // 2] ** (1.0 / 3.0)
+    rho0 = sorted(rho[k] for k in range(len(pos)) if body[k] == 0)[len(volumes) // 2]
+    ring = 0.5 * dx
+    count = int(round(10 * dx / ring))
+    sums, counts = [0.0] * count, [0] * count
+    for k, p in enumerate(pos):
+        if body[k] != 0:
+            continue
+        b = int(math.floor((math.hypot(p[0], p[1]) - (radius - 5 * dx)) / ring))
+        if 0 <= b < count:
+            sums[b] += rho0 * work[k]
+            counts[b] += 1
+    profile = [sums[b] / counts[b] for b in range(count) if counts[b] > 0]
+    if len(profile) < 6:
+        return float('nan'), dx
+    background = 0.25 * (profile[0] + profile[1] + profile[-1] + profile[-2])
+    peak = max(profile)
+    if not peak > background:
+        return float('nan'), dx
+    return sum(max(w - background, 0.0) for w in profile) * ring / (peak - background), dx
 
 
 if __name__ == '__main__':
