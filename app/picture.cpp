@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/gnuplot.hpp"
+#include "common/damage.hpp"
 #include "common/output.hpp"
 
 namespace fs = std::filesystem;
@@ -18,7 +19,6 @@ namespace impactsph {
 
 namespace {
 
-constexpr double kFailedDamage = 0.99;  // as observables.hpp counts damaged mass
 constexpr double kInPlane = 1e-6;       // |direction component| below which an axis lies in the impact plane
 constexpr const char* kFailedColour = "#1565ff";            // failed particles of the other bodies
 constexpr const char* kFailedProjectileColour = "#2e9d3a";  // of the projectile

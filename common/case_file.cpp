@@ -1104,13 +1104,6 @@ CaseSpec read_case(const toml::table& tree, const Reporter& r) {
 // ---------------------------------------------------------------------------------------------------
 // Overrides
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
-
 // The value of an override as a TOML node: `0.1`, `true`, `"298 m/s"`, `[0, 0, -1]` are TOML; anything
 // that does not parse as one TOML value (`298 m/s`, `40us`) is taken as a string.
 toml::table value_holder(const std::string& value) {

@@ -7,6 +7,8 @@
 #include <map>
 #include <unordered_map>
 
+#include "common/damage.hpp"
+
 namespace impactsph {
 
 namespace {
@@ -109,7 +111,7 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
       if (p.body[i] != body) continue;
       m += p.mass[i];
       mv += p.mass[i] * dot(p.vel[i], direction);
-      if (p.damage[i] >= 0.99) failed += p.mass[i];
+      if (p.damage[i] >= kFailedDamage) failed += p.mass[i];
     }
     out.projectile = true;
     out.residual_velocity = m > 0 ? mv / m : 0.0;
@@ -119,7 +121,7 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
 
   if (os.target_index >= 0) {
     // The plug: a piece of the target cut out of the plate that leaves with the projectile. The target's
-    // intact particles (damage < 0.99: a failed particle carries no tension, so it holds nothing together)
+    // intact particles (damage < kFailedDamage: a failed particle carries no tension, so it holds nothing together)
     // are linked into pieces by distance (1.5 dx). The plate is the piece, or pieces, holding a clamped
     // particle (the heaviest piece when nothing is clamped); the plug is the heaviest other piece whose
     // mass-weighted velocity along the impact direction exceeds half the projectile's residual velocity,
@@ -133,7 +135,7 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
     std::vector<std::size_t> members;
     if (out.residual_velocity > os.settle_tolerance)
       for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.body[i] == body && p.damage[i] < 0.99) members.push_back(i);
+        if (p.body[i] == body && p.damage[i] < kFailedDamage) members.push_back(i);
     DisjointSets sets = connect(p, members, 1.5 * dx);
     struct Piece {
       double mass = 0, momentum = 0;
@@ -173,7 +175,7 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
         if (sets.find(k) == plug_root) carried.push_back(members[k]);
       const std::size_t plug_count = carried.size();
       for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.body[i] == body && p.damage[i] >= 0.99 && dot(p.vel[i], direction) > v_cut) carried.push_back(i);
+        if (p.body[i] == body && p.damage[i] >= kFailedDamage && dot(p.vel[i], direction) > v_cut) carried.push_back(i);
       DisjointSets with_rim = connect(p, carried, 1.5 * dx);
       std::vector<char> joins_plug(carried.size(), 0);
       for (std::size_t k = 0; k < plug_count; ++k) joins_plug[with_rim.find(k)] = 1;
@@ -192,7 +194,7 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
     for (std::size_t i = 0; i < p.size(); ++i)
       if (p.body[i] == body) {
         target_mass += p.mass[i];
-        if (p.damage[i] >= 0.99) target_failed += p.mass[i];
+        if (p.damage[i] >= kFailedDamage) target_failed += p.mass[i];
       }
     out.damage_fraction = target_mass > 0 ? target_failed / target_mass : 0.0;
     out.target = true;

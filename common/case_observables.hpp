@@ -18,12 +18,12 @@ struct CaseObservables {
   double impact_face_diameter_area = 0;     // m, of the circle of the wall layer's area, sum (m/rho) / dz, whole bar
   bool projectile = false;
   double residual_velocity = 0;     // m/s, mass-weighted velocity along the initial direction
-  double residual_mass = 0;         // kg, initial mass less the particles with D >= 0.99 (X section 3.1)
-  double eroded_mass = 0;           // kg, the projectile particles with D >= 0.99 (initial less residual mass)
+  double residual_mass = 0;         // kg, initial mass less the particles with D >= kFailedDamage (X section 3.1)
+  double eroded_mass = 0;           // kg, the projectile particles with D >= kFailedDamage (initial less residual mass)
   bool target = false;
   double plug_mass = 0;             // kg, the heaviest piece of intact target cut off the clamped plate, leaving
   double plug_velocity = 0;         // m/s, its mass-weighted velocity along the impact direction
-  double damage_fraction = 0;       // mass fraction of the target with D >= 0.99 (fully damaged)
+  double damage_fraction = 0;       // mass fraction of the target with D >= kFailedDamage (fully damaged)
   bool perforated = false;
   double settled_time = -1;         // s, since when the residual velocity has been steady; -1: not yet
 };

@@ -6,6 +6,10 @@
 
 namespace impactsph {
 
+// A particle counts as failed from D >= 0.99 in every observable, picture and report (damaged mass,
+// residual and eroded mass, plug detection): the continuous damage models approach 1 only in the limit.
+constexpr double kFailedDamage = 0.99;
+
 // Stress triaxiality sigma* = sigma_m / sigma_eq (F after eq 4.7, X eq 34), with the mean stress
 // sigma_m = -P (P > 0 in compression) and sigma_eq the von Mises stress (Pa). Dimensionless; defined as 0
 // when sigma_eq == 0 (no deviatoric stress: the ratio has no meaning, and 0 is the pure-shear value).

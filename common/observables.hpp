@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "common/damage.hpp"
 #include "common/particle_set.hpp"
 
 namespace impactsph {
@@ -14,7 +15,7 @@ struct BodySummary {
   double kinetic_energy = 0;      // J
   double internal_energy = 0;     // J (sum m e)
   double plastic_work = 0;        // J (sum m w_p): the part of the internal energy that plastic flow did
-  double damaged_fraction = 0;    // mass fraction with D >= 0.99
+  double damaged_fraction = 0;    // mass fraction with D >= kFailedDamage
 };
 
 struct Totals {
@@ -38,7 +39,7 @@ inline std::vector<BodySummary> summarise_bodies(const ParticleSet& p, std::size
     b.kinetic_energy += 0.5 * m * norm2(p.vel[i]);
     b.internal_energy += m * p.energy[i];
     b.plastic_work += m * p.plastic_work[i];
-    if (p.damage[i] >= 0.99) b.damaged_fraction += m;
+    if (p.damage[i] >= kFailedDamage) b.damaged_fraction += m;
   }
   for (std::size_t k = 0; k < body_count; ++k) {
     if (out[k].mass > 0) {

@@ -303,13 +303,6 @@ class UnitParser {
   std::size_t pos_ = 0;
 };
 
-std::string trim(const std::string& s) {
-  std::size_t b = 0, e = s.size();
-  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
-  return s.substr(b, e - b);
-}
-
 // Length of the leading decimal number of s (sign, digits, point, exponent), 0 if there is none. The
 // exponent is only taken when digits follow, so "2 em" would not eat the "e".
 std::size_t number_length(const std::string& s) {
@@ -333,6 +326,13 @@ std::size_t number_length(const std::string& s) {
 }
 
 }  // namespace
+
+std::string trim(const std::string& s) {
+  std::size_t b = 0, e = s.size();
+  while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+  while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+  return s.substr(b, e - b);
+}
 
 std::string dimension_name(Dimension d) {
   switch (d) {

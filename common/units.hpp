@@ -28,6 +28,9 @@ enum class Dimension {
   StrainRate       // 1/s (written "1/s", "/s" or "s^-1": "1e-3 /s", "1 1/s", "1 s^-1")
 };
 
+// s without its leading and trailing white space.
+std::string trim(const std::string& s);
+
 // "length", "velocity", ... as used in messages ("expected a length").
 std::string dimension_name(Dimension d);
 // A typical quantity of that dimension as a case file would write it, e.g. "8 mm" or "200 GPa".

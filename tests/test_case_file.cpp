@@ -12,6 +12,7 @@
 
 #include "common/case_file.hpp"
 #include "common/errors.hpp"
+#include "common/scene.hpp"
 
 using impactsph::CaseError;
 using impactsph::CaseSpec;
@@ -1138,4 +1139,36 @@ TEST(CaseFileErrors, BadNoses) {
   // A box has no nose.
   t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]", "max = [\"10 mm\", \"10 mm\", \"2 mm\"]\nnose = { kind = \"flat\" }");
   expect_error(t, "bodies[0].nose", "\"nose\" is a key of a cylinder, not of a box", -1);
+}
+
+// Both plate cases take Weldox 460 E from cases/materials/weldox-460e.toml, whose crack-band criterion the
+// scene turns into a critical plastic work Gamma / (k h0) at its spacing (damage.hpp): twice as large at
+// 1 mm as at 2 mm.
+TEST(CaseFileLoad, PlateCasesShareTheWeldoxMaterialFile) {
+  const std::string cases = IMPACTSPH_CASES;
+  const CaseSpec p8 = impactsph::load_case_file(cases + "/plate-8mm/case.toml", {}, "2 mm");
+  const CaseSpec p12 = impactsph::load_case_file(cases + "/plate-12mm/case.toml", {}, "2 mm");
+  const auto weldox = [](const CaseSpec& s) {
+    const auto it = std::find_if(s.materials.begin(), s.materials.end(),
+                                 [](const impactsph::MaterialSpec& m) { return m.name == "weldox-460e"; });
+    EXPECT_NE(it, s.materials.end());
+    return it->params;
+  };
+  const auto a = weldox(p8), b = weldox(p12);
+  EXPECT_EQ(a.damage.kind, impactsph::DamageKind::FractureEnergy);
+  EXPECT_EQ(b.damage.kind, a.damage.kind);
+  EXPECT_EQ(b.damage.fracture_energy, a.damage.fracture_energy);
+  EXPECT_EQ(b.damage.band_width_factor, a.damage.band_width_factor);
+  EXPECT_EQ(b.strength.jc_a, a.strength.jc_a);
+  EXPECT_GT(a.damage.fracture_energy, 0);
+  const std::size_t k = static_cast<std::size_t>(
+      std::find_if(p8.materials.begin(), p8.materials.end(),
+                   [](const impactsph::MaterialSpec& m) { return m.name == "weldox-460e"; }) -
+      p8.materials.begin());
+  const double h0_2mm = p8.numerics.h_factor * 2e-3;
+  const impactsph::Scene coarse = impactsph::build_scene(p8);
+  EXPECT_NEAR(coarse.materials[k].damage.critical_plastic_work,
+              a.damage.fracture_energy / (a.damage.band_width_factor * h0_2mm), 1e-9 * a.damage.fracture_energy / h0_2mm);
+  const impactsph::Scene fine = impactsph::build_scene(impactsph::load_case_file(cases + "/plate-8mm/case.toml", {}, "1 mm"));
+  EXPECT_NEAR(fine.materials[k].damage.critical_plastic_work / coarse.materials[k].damage.critical_plastic_work, 2.0, 1e-12);
 }

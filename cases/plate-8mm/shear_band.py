@@ -15,8 +15,8 @@ The band width is the energy width of the radial profile of the plastic work den
 lattice spacing, read from the particle masses), the mean of the two outermost rings on each side is the
 background, and the width is the area under the profile above it divided by its peak above it,
   w = sum_rings (W_ring - W_bg) dx/2 / (W_peak - W_bg),
-printed in mm and in initial smoothing lengths h0 = h_factor dx (h_factor from the run's run.json, else
-1.2). It is the width the crack-band criterion assumes (common/damage.hpp): a band that dissipates
+printed in mm and in initial smoothing lengths h0 = h_factor dx (h_factor from the run's summary.json,
+else 1.2). It is the width the crack-band criterion assumes (common/damage.hpp): a band that dissipates
 Gamma per unit area fails where its peak reaches Gamma / w. The axis is the line x = y = 0 along z (the
 plate cases' quarter models); the target is body 0 and the projectile body 1, the order of the case's
 [[bodies]]. Standard library only.
@@ -41,9 +41,10 @@ def main():
         sys.exit('shear_band.py: no %s; run the case without --set output.vtu=false' % pvd_path)
     frames = re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"', open(pvd_path).read())
     h_factor = 1.2
-    run_json = os.path.join(run, 'run.json')
-    if os.path.exists(run_json):
-        h_factor = json.load(open(run_json)).get('numerics', {}).get('h_factor', h_factor)
+    summary = os.path.join(run, 'summary.json')
+    if os.path.exists(summary):
+        s = json.load(open(summary))
+        h_factor = s['smoothing_length_m'] / s['spacing_m']
     print('%8s %12s %10s %7s %10s %9s %10s %8s' % ('t [us]', 'plug dz [mm]', 'nose [mm]', 'failed', 'band eps',
                                                   'band max', 'width [mm]', 'width/h0'))
     for t, name in frames:
