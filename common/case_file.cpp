@@ -327,6 +327,8 @@ void check_name(const Reporter& r, const toml::node* at, const std::string& key,
 
 const Keys kEosKinds{"linear", "polynomial", "mie-gruneisen", "gruneisen-cubic"};
 const Keys kStrengthKinds{"hydrodynamic", "elastic", "perfectly-plastic", "johnson-cook", "johnson-holmquist-2"};
+// What the pairs of a failed particle carry (DamageParams::compressive_crack_faces).
+const Keys kCrackFaces{"scaled", "compression"};
 const Keys kDamageKinds{"none", "critical-plastic-strain", "fracture-energy", "johnson-cook", "johnson-holmquist-2"};
 
 void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
@@ -535,15 +537,19 @@ void read_damage(const View& d, const StrengthParams<double>& strength, DamagePa
                        "\" has no plasticity of that kind; use strength kind \"johnson-cook\" or \"perfectly-plastic\", "
                        "or damage kind \"none\"");
   p.scale_pairs = d.boolean_or("pair_factor", true);
+  p.compressive_crack_faces = d.choice("crack_faces", kCrackFaces, "scaled") == "compression";
+  if (p.compressive_crack_faces && !p.scale_pairs)
+    d.fail("crack_faces", "crack_faces = \"compression\" acts on the pairs of failed particles, which "
+                          "pair_factor = false leaves unscaled and unfailed; set pair_factor = true or drop crack_faces");
   if (kind == "critical-plastic-strain") {
-    d.allow({"kind", "critical_plastic_strain", "pair_factor"});
+    d.allow({"kind", "critical_plastic_strain", "pair_factor", "crack_faces"});
     p.kind = DamageKind::CriticalPlasticStrain;
     p.critical_plastic_strain = d.number("critical_plastic_strain");
     d.range("critical_plastic_strain", p.critical_plastic_strain, 0, 10, Dimension::Dimensionless, true);
     return;
   }
   if (kind == "fracture-energy") {
-    d.allow({"kind", "fracture_energy", "band_width_factor", "pair_factor"});
+    d.allow({"kind", "fracture_energy", "band_width_factor", "pair_factor", "crack_faces"});
     p.kind = DamageKind::FractureEnergy;
     p.fracture_energy = d.quantity("fracture_energy", Dimension::FractureEnergy);
     d.range("fracture_energy", p.fracture_energy, 0, 1e8, Dimension::FractureEnergy, true, false,
@@ -553,7 +559,7 @@ void read_damage(const View& d, const StrengthParams<double>& strength, DamagePa
             "the width of the failing band in initial smoothing lengths h0 = h_factor x spacing");
     return;
   }
-  d.allow({"kind", "d1", "d2", "d3", "d4", "d5", "min_failure_strain", "pair_factor"});
+  d.allow({"kind", "d1", "d2", "d3", "d4", "d5", "min_failure_strain", "pair_factor", "crack_faces"});
   p.kind = DamageKind::JohnsonCook;
   const std::string why = "the Johnson-Cook failure constants are at most 20 in magnitude";
   p.d1 = d.number("d1");

@@ -70,22 +70,24 @@ IMPACTSPH_HD Real fracture_energy_critical_work(const DamageParams<Real>& d, Rea
 //     else 0 (D jumps from 0 to 1; eps_c must be > 0, or the material fails at once);
 //   FractureEnergy (crack band, above): 1 once the plastic work per unit initial volume after the step,
 //     rho0 w_p_after (w_p_after in J/kg, the particle's accumulated sum sigma_y d eps_p / rho), reaches the
-//     critical work W_c = Gamma / (k h0), else 0 (D jumps from 0 to 1, as in F 4.9);
+//     critical work W_c = Gamma / (k h0) on a plastic step, else 0 (D jumps from 0 to 1, as in F 4.9);
+//     never while W_c <= 0 (unset: the scene sets it from the spacing, fracture_energy_critical_work);
 //   JohnsonCook (F eq 4.8, X eq 32): d_eps_p / eps_f, eps_f of johnson_cook_failure_strain at the
 //     triaxiality -P/sigma_eq (P and sigma_eq in Pa), eps_dot* = max(eps_rate/eps_dot0, 1) with the
 //     strength model's reference rate, and T* from the strength model's melt temperature and the
 //     material's room temperature (T in K). 1 when eps_f <= 0 and the step is plastic.
 //   JohnsonHolmquist2 (X eqs 25-26): d_eps_p / eps_f, eps_f of jh2_failure_strain at the pressure P (Pa,
 //     with the bulking increment) and the strength model's P_HEL and T. 1 when eps_f <= 0.
-// No damage without plastic flow (d_eps_p <= 0) in the JohnsonCook and JH-2 models. Dimensionless.
+// No damage without plastic flow (d_eps_p <= 0) except in CriticalPlasticStrain. Dimensionless.
 template <class Real>
 IMPACTSPH_HD Real damage_increment(const MaterialParams<Real>& m, Real d_eps_p, Real eps_p_after, Real w_p_after, Real P,
                                    Real sigma_eq, Real eps_rate, Real T) {
   if (m.damage.kind == DamageKind::CriticalPlasticStrain)
     return eps_p_after >= m.damage.critical_plastic_strain ? Real(1) : Real(0);
-  if (m.damage.kind == DamageKind::FractureEnergy)
-    return m.eos.rho0 * w_p_after >= m.damage.critical_plastic_work ? Real(1) : Real(0);
   if (!(d_eps_p > Real(0))) return Real(0);
+  if (m.damage.kind == DamageKind::FractureEnergy)
+    return m.damage.critical_plastic_work > Real(0) && m.eos.rho0 * w_p_after >= m.damage.critical_plastic_work
+               ? Real(1) : Real(0);
   if (m.damage.kind == DamageKind::JohnsonHolmquist2) {
     const Real eps_f = jh2_failure_strain(m.damage.d1, m.damage.d2, P / m.strength.p_hel,
                                           m.strength.tensile_pressure / m.strength.p_hel, m.damage.min_failure_strain);
@@ -151,6 +153,12 @@ IMPACTSPH_HD Real jh2_bulking_increment(const MaterialParams<Real>& m, Real rho,
 // else 0 (JH-2 ceramics, and metals modelled as in X, carry damage in their constitutive law only).
 template <class Real> IMPACTSPH_HD Real pair_damage(const MaterialParams<Real>& m, Real D) {
   return m.damage.scale_pairs ? D : Real(0);
+}
+
+// Whether particle i, at pair damage D (pair_damage), is a crack face whose pairs carry compression only
+// (DamageParams::compressive_crack_faces): it has failed and its material asks for it.
+template <class Real> IMPACTSPH_HD bool compressive_crack_face(const MaterialParams<Real>& m, Real D) {
+  return D >= Real(1) && m.damage.compressive_crack_faces;
 }
 
 // Damaged interaction (F eq 4.10): the kernel and its gradient between i and j are scaled by

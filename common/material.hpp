@@ -67,6 +67,10 @@ struct DamageParams {
   // Scale the SPH pair terms by 1 - D_ij (F eq 4.10). F's metals do; a JH-2 ceramic carries its damage
   // in its strength (X eq 22) and comminuted material must still resist compression, so it does not.
   bool scale_pairs = true;
+  // Crack faces: the pairs of a failed particle (D >= 1) carry only the compressive mean stress of each
+  // side, so that intact material across a crack no longer pulls or shears the failed layer (case key
+  // crack_faces = "compression"); false keeps F 4.10, where such a pair carries both full stresses at 1 - D_ij.
+  bool compressive_crack_faces = false;
 };
 
 template <class Real>
@@ -107,6 +111,7 @@ template <class To, class From> MaterialParams<To> convert_material(const Materi
   r.damage.min_failure_strain = To(d.min_failure_strain);
   r.damage.bulking = To(d.bulking);
   r.damage.scale_pairs = d.scale_pairs;
+  r.damage.compressive_crack_faces = d.compressive_crack_faces;
   r.specific_heat = To(m.specific_heat);
   r.room_temperature = To(m.room_temperature);
   return r;

@@ -78,13 +78,26 @@ struct PairSide {
   Real av_factor;        // viscosity factor (1, or Balsara's)
   Real sound_speed;      // m/s
   Real rho;              // kg/m^3
+  bool crack_face;       // failed, with pairs that carry compression only (compressive_crack_face)
 };
+
+// The pair stress of a crack face (either side a crack_face): the compressive mean stresses of the two
+// sides, min(tr A_i / 3, 0) + min(tr A_j / 3, 0) times I (tr A / 3 = -P / rho^2), so that across a crack
+// neither tension nor shear is carried, while the faces still push apart when pressed together.
+// Units of A (m^5 kg^-1 s^-2).
+template <class Real> IMPACTSPH_HD Mat3<Real> crack_face_stress(const Mat3<Real>& A_i, const Mat3<Real>& A_j) {
+  const Real c = min_of(A_i.trace() / Real(3), Real(0)) + min_of(A_j.trace() / Real(3), Real(0));
+  Mat3<Real> T = Mat3<Real>::zero();
+  T.m[0][0] = c; T.m[1][1] = c; T.m[2][2] = c;
+  return T;
+}
 
 // Neighbour j's share of the momentum (F 2.11) and energy (consistent F 2.12) rates of i, with the
 // symmetrised corrected gradient gt = (1 - D_ij)(L_i^-1 + L_j^-1)/2 gw (F 2.14, F 4.10) and the Monaghan
 // viscosity Pi_ij (F 2.16-2.17, scaled by the pair mean of the Balsara factors):
 //   dv_i/dt += m_j (A_i + A_j - Pi_ij I) gt   (m/s^2),
-//   de_i/dt -= m_j/2 v_ij . (A_i + A_j - Pi_ij I) gt   (J/kg/s).
+//   de_i/dt -= m_j/2 v_ij . (A_i + A_j - Pi_ij I) gt   (J/kg/s);
+// at a crack face A_i + A_j becomes crack_face_stress(A_i, A_j).
 // h_ij is the pair smoothing length (m), m_j the mass of j (kg).
 template <class Real>
 IMPACTSPH_HD void add_momentum_energy_pair(const PairSide<Real>& i, const PairSide<Real>& j, const ViscosityParams<Real>& visc,
@@ -94,7 +107,7 @@ IMPACTSPH_HD void add_momentum_energy_pair(const PairSide<Real>& i, const PairSi
   const Real pi_ij = Real(0.5) * (i.av_factor + j.av_factor) *
                      monaghan_viscosity(visc, xij, vij, hij, Real(0.5) * (i.sound_speed + j.sound_speed),
                                         Real(0.5) * (i.rho + j.rho));
-  Mat3<Real> T = i.A + j.A;
+  Mat3<Real> T = i.crack_face || j.crack_face ? crack_face_stress(i.A, j.A) : i.A + j.A;
   T.m[0][0] -= pi_ij; T.m[1][1] -= pi_ij; T.m[2][2] -= pi_ij;
   const Vec3<Real> tg = T * gt;
   acc += m_j * tg;

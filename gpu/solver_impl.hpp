@@ -866,7 +866,8 @@ class Solver final : public GpuStepper {
       const Real rhoi = w.rho[s], hi = w.h[s], mi_mass = w.m[s];
       const std::int32_t mi = w.mat[s], bi = w.body[s];
       const MaterialParams<Real>& mat_i = mats[mi];
-      const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi};
+      const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi,
+                                  compressive_crack_face(mat_i, w.damage[s])};
       const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
       Real sum[5] = {};  // acceleration x, y, z; energy rate; delta-SPH diffusion
       IMPACTSPH_SIMD_SUMS(sum[:5])
@@ -877,7 +878,8 @@ class Solver final : public GpuStepper {
         const Real r = norm(xij);
         if (r < kernel_support(hij) && !w.pair(bi, w.body[j]).penalty) {
           const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
-          const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j]};
+          const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j],
+                                      compressive_crack_face(mats[w.mat[j]], w.damage[j])};
           Vec3<Real> acc{0, 0, 0};
           Real de = 0;
           add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], acc, de);

@@ -246,7 +246,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
 }
 
 PairSide<double> ReferenceSolver::pair_side(std::size_t i) const {
-  return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i]};
+  const bool crack_face = compressive_crack_face(materials_[static_cast<std::size_t>(mat_[i])], pair_damage_[i]);
+  return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i], crack_face};
 }
 
 void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {

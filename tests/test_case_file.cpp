@@ -961,6 +961,10 @@ TEST(CaseFileMaterials, DamageErrors) {
        "initial smoothing lengths"},
       {"kind = \"fracture-energy\", fracture_energy = \"150 kJ/m^2\", band_width_factor = 2, critical_plastic_strain = 0.3",
        k + "critical_plastic_strain", "unknown key"},
+      {"kind = \"fracture-energy\", fracture_energy = \"150 kJ/m^2\", band_width_factor = 2, crack_faces = \"open\"",
+       k + "crack_faces", "\"scaled\", \"compression\""},
+      {"kind = \"critical-plastic-strain\", critical_plastic_strain = 0.3, pair_factor = false, crack_faces = \"compression\"",
+       k + "crack_faces", "set pair_factor = true"},
       {jc + "d1 = -1.5, d2 = 1, d3 = -1", k + "d1", "at least -1"},
       {jc + "d1 = 21, d2 = 1, d3 = -1", k + "d1", "at most 20"},
       {jc + "d1 = 0.1, d2 = -0.1, d3 = -1", k + "d2", "at least 0"},
@@ -1148,23 +1152,22 @@ TEST(CaseFileLoad, PlateCasesShareTheWeldoxMaterialFile) {
   const std::string cases = IMPACTSPH_CASES;
   const CaseSpec p8 = impactsph::load_case_file(cases + "/plate-8mm/case.toml", {}, "2 mm");
   const CaseSpec p12 = impactsph::load_case_file(cases + "/plate-12mm/case.toml", {}, "2 mm");
-  const auto weldox = [](const CaseSpec& s) {
+  const auto weldox_index = [](const CaseSpec& s) {
     const auto it = std::find_if(s.materials.begin(), s.materials.end(),
                                  [](const impactsph::MaterialSpec& m) { return m.name == "weldox-460e"; });
-    EXPECT_NE(it, s.materials.end());
-    return it->params;
+    return static_cast<std::size_t>(it - s.materials.begin());
   };
-  const auto a = weldox(p8), b = weldox(p12);
+  const std::size_t k = weldox_index(p8), k12 = weldox_index(p12);
+  ASSERT_LT(k, p8.materials.size()) << "plate-8mm has no material weldox-460e";
+  ASSERT_LT(k12, p12.materials.size()) << "plate-12mm has no material weldox-460e";
+  const auto& a = p8.materials[k].params;
+  const auto& b = p12.materials[k12].params;
   EXPECT_EQ(a.damage.kind, impactsph::DamageKind::FractureEnergy);
   EXPECT_EQ(b.damage.kind, a.damage.kind);
   EXPECT_EQ(b.damage.fracture_energy, a.damage.fracture_energy);
   EXPECT_EQ(b.damage.band_width_factor, a.damage.band_width_factor);
   EXPECT_EQ(b.strength.jc_a, a.strength.jc_a);
   EXPECT_GT(a.damage.fracture_energy, 0);
-  const std::size_t k = static_cast<std::size_t>(
-      std::find_if(p8.materials.begin(), p8.materials.end(),
-                   [](const impactsph::MaterialSpec& m) { return m.name == "weldox-460e"; }) -
-      p8.materials.begin());
   const double h0_2mm = p8.numerics.h_factor * 2e-3;
   const impactsph::Scene coarse = impactsph::build_scene(p8);
   EXPECT_NEAR(coarse.materials[k].damage.critical_plastic_work,

@@ -325,6 +325,11 @@ TEST(FractureEnergy, FailsAtCriticalWorkOfBandWidth) {
   const double w_c = m.damage.critical_plastic_work / m.eos.rho0;  // J/kg
   EXPECT_EQ(damage_increment(m, 0.01, 0.5, 0.999 * w_c, 0.0, 5e8, 1e3, 293.0), 0.0);
   EXPECT_EQ(damage_increment(m, 0.01, 0.5, w_c, 0.0, 5e8, 1e3, 293.0), 1.0);
+  // No failure on an elastic step, nor while W_c is unset (a material the scene has not sized).
+  EXPECT_EQ(damage_increment(m, 0.0, 0.5, w_c, 0.0, 5e8, 1e3, 293.0), 0.0);
+  MaterialParams<double> unsized = m;
+  unsized.damage.critical_plastic_work = 0;
+  EXPECT_EQ(damage_increment(unsized, 0.01, 0.0, 0.0, 0.0, 5e8, 1e3, 293.0), 0.0);
   // Halving h0 doubles the work density at failure: the energy per unit area, W_c k h0, stays Gamma.
   EXPECT_NEAR(fracture_energy_critical_work(m.damage, 0.5 * h0) * m.damage.band_width_factor * 0.5 * h0, 2.0e5, 1e-6);
 }
@@ -379,3 +384,62 @@ TEST(FractureEnergy, ReducesToCriticalPlasticStrainAtTheMatchingGamma) {
   band.damage.critical_plastic_work = fracture_energy_critical_work(band.damage, 0.5 * h0_2mm);
   EXPECT_GT(first_failure(band, unused), step_critical);
 }
+
+namespace {
+
+using namespace impactsph;
+
+// A pair across a crack face (crack_faces = "compression", pair_terms.hpp): an intact particle i in shear
+// and tension beside a failed j. Under F 4.10 the pair carries i's shear at half weight; at a crack face it
+// carries only the compressive mean stresses, so a tensile or sheared i exerts nothing on j and a
+// compressed i pushes along the pair's own (mean-stress) direction; the pair stays equal and opposite.
+TEST(CrackFace, CarriesOnlyCompressionAcrossAFailedParticle) {
+  const double rho = 7850;
+  Mat3<double> shear_tension = Mat3<double>::zero();  // S_xy = 200 MPa, P = -100 MPa (tension)
+  shear_tension.m[0][1] = shear_tension.m[1][0] = 2e8 / (rho * rho);
+  for (int d = 0; d < 3; ++d) shear_tension.m[d][d] = 1e8 / (rho * rho);
+  Mat3<double> failed_compressed = Mat3<double>::zero();  // P = 50 MPa, no deviator (apply_failure)
+  for (int d = 0; d < 3; ++d) failed_compressed.m[d][d] = -5e7 / (rho * rho);
+  const ViscosityParams<double> no_visc{0, 0};
+  const Vec3<double> xij{-1e-3, 0, 0}, vij{0, 0, 0}, gw{2e6, 0, 0};
+  const double h = 1.3e-3, m = 7.85e-3;
+  const auto pair = [&](const Mat3<double>& Ai, const Mat3<double>& Aj, bool faces, Vec3<double>& on_i, Vec3<double>& on_j) {
+    const PairSide<double> i{Ai, Mat3<double>::identity(), 0.0, 1, 5000, rho, false};
+    const PairSide<double> j{Aj, Mat3<double>::identity(), 1.0, 1, 5000, rho, faces};
+    double de = 0;
+    on_i = Vec3<double>{0, 0, 0};
+    on_j = Vec3<double>{0, 0, 0};
+    add_momentum_energy_pair(i, j, no_visc, gw, xij, vij, h, m, on_i, de);
+    add_momentum_energy_pair(j, i, no_visc, -1.0 * gw, -1.0 * xij, -1.0 * vij, h, m, on_j, de);
+  };
+  Vec3<double> on_i, on_j;
+  pair(shear_tension, failed_compressed, false, on_i, on_j);
+  EXPECT_GT(std::abs(on_i.y), 1.0) << "F 4.10 carries i's shear across the failed particle";
+  pair(shear_tension, failed_compressed, true, on_i, on_j);
+  EXPECT_EQ(on_i.y, 0.0);
+  EXPECT_EQ(on_i.z, 0.0);
+  // Only j's 50 MPa pressure remains: m (-P_j / rho^2) gt with gt = (1 - 1/2) gw.
+  EXPECT_NEAR(on_i.x, m * (-5e7 / (rho * rho)) * 0.5 * gw.x, 1e-12 * std::abs(on_i.x));
+  EXPECT_NEAR(on_i.x + on_j.x, 0.0, 1e-12 * std::abs(on_i.x));
+  // Either side may be the face: the same pair seen from j.
+  const PairSide<double> i{shear_tension, Mat3<double>::identity(), 0.0, 1, 5000, rho, false};
+  const PairSide<double> j{failed_compressed, Mat3<double>::identity(), 1.0, 1, 5000, rho, true};
+  Vec3<double> a{0, 0, 0}, b{0, 0, 0};
+  double de = 0;
+  add_momentum_energy_pair(i, j, no_visc, gw, xij, vij, h, m, a, de);
+  add_momentum_energy_pair(j, i, no_visc, gw, xij, vij, h, m, b, de);
+  EXPECT_EQ(a.x, b.x);
+  EXPECT_EQ(a.y, b.y);
+}
+
+TEST(CrackFace, OnlyFailedParticlesOfMaterialsThatAskForIt) {
+  MaterialParams<double> m;
+  m.damage.kind = DamageKind::FractureEnergy;
+  EXPECT_FALSE(compressive_crack_face(m, 1.0));
+  m.damage.compressive_crack_faces = true;
+  EXPECT_TRUE(compressive_crack_face(m, 1.0));
+  EXPECT_FALSE(compressive_crack_face(m, 0.999));
+  EXPECT_FALSE(compressive_crack_face(m, pair_damage(MaterialParams<double>{}, 0.0)));
+}
+
+}  // namespace

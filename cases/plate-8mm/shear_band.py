@@ -8,7 +8,10 @@ For each frame of the run (particles.pvd; run without output.vtu=false) it print
 displacement against the plate (mean axial position of the plate particles within half the projectile
 radius of the axis, against those of a ring 1.4-1.6 radii out), the projectile's nose, the number of
 failed plate particles (D >= 0.99), the equivalent plastic strain of the plate particles in the band
-0.9-1.1 radii from the axis (mean and largest), and the band's width.
+0.9-1.1 radii from the axis (mean and largest), the band's width, and the plastic work density at
+failure: the median of W = rho0 w_p (MJ/m^3) over the failed plate particles, which keep the w_p they
+failed with. Under F's critical plastic strain it is the W_p(eps_c) that the crack-band criterion's
+Gamma = W_p(eps_c) k h0 carries over (cases/materials/weldox-460e.toml).
 
 The band width is the energy width of the radial profile of the plastic work density W = rho0 w_p
 (J/m^3) across the band: W is averaged in rings dx/2 wide within 5 dx of the projectile's radius (dx the
@@ -45,8 +48,8 @@ def main():
     if os.path.exists(summary):
         s = json.load(open(summary))
         h_factor = s['smoothing_length_m'] / s['spacing_m']
-    print('%8s %12s %10s %7s %10s %9s %10s %8s' % ('t [us]', 'plug dz [mm]', 'nose [mm]', 'failed', 'band eps',
-                                                  'band max', 'width [mm]', 'width/h0'))
+    print('%8s %12s %10s %7s %10s %9s %10s %8s %12s' % ('t [us]', 'plug dz [mm]', 'nose [mm]', 'failed', 'band eps',
+                                                       'band max', 'width [mm]', 'width/h0', 'W fail [MJ/m3]'))
     for t, name in frames:
         a = read_vtu(os.path.join(run, name))
         pos, body, damage, eps = a['Points'], a['body_id'], a['damage'], a['plastic_strain']
@@ -68,9 +71,23 @@ def main():
             if damage[k] >= 0.99:
                 failed += 1
         dz = sum(ring) / len(ring) - sum(centre) / len(centre) if centre and ring else float('nan')
-        print('%8.1f %12.2f %10.2f %7d %10.3f %9.3f %10.2f %8.2f' % (
+        print('%8.1f %12.2f %10.2f %7d %10.3f %9.3f %10.2f %8.2f %12.1f' % (
             float(t) * 1e6, dz * 1e3, nose * 1e3, failed, sum(band) / len(band) if band else float('nan'),
-            max(band) if band else float('nan'), width * 1e3, width / (h_factor * dx)))
+            max(band) if band else float('nan'), width * 1e3, width / (h_factor * dx), failure_work(a) * 1e-6))
+
+
+def reference_density(a):
+    """The plate's rho0 (kg/m^3), read as the median density of its particles."""
+    rho = sorted(a['density'][k] for k in range(len(a['Points'])) if a['body_id'][k] == 0)
+    return rho[len(rho) // 2]
+
+
+def failure_work(a):
+    """Median plastic work density rho0 w_p (J/m^3) of the failed plate particles (D >= 0.99); nan if none."""
+    rho0 = reference_density(a)
+    w = sorted(rho0 * a['plastic_work'][k] for k in range(len(a['Points']))
+               if a['body_id'][k] == 0 and a['damage'][k] >= 0.99)
+    return w[len(w) // 2] if w else float('nan')
 
 
 def band_width(a, radius):
@@ -78,7 +95,7 @@ def band_width(a, radius):
     pos, body, mass, rho, work = a['Points'], a['body_id'], a['mass'], a['density'], a['plastic_work']
     volumes = sorted(mass[k] / rho[k] for k in range(len(pos)) if body[k] == 0)
     dx = volumes[len(volumes) // 2] ** (1.0 / 3.0)
-    rho0 = sorted(rho[k] for k in range(len(pos)) if body[k] == 0)[len(volumes) // 2]
+    rho0 = reference_density(a)
     ring = 0.5 * dx
     count = int(round(10 * dx / ring))
     sums, counts = [0.0] * count, [0] * count
