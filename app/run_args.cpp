@@ -1,5 +1,7 @@
 #include "app/run_args.hpp"
 
+#include "common/case_file.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -38,6 +40,7 @@ std::string run_fingerprint(const std::string& case_file, const std::string& spa
     h *= 1099511628211ull;
   };
   mix(read_text_file(case_file));
+  for (const std::string& f : case_material_files(case_file)) mix(read_text_file(f));
   mix(spacing);
   for (const std::string& s : sets) mix(s);
   char buf[32];

@@ -1312,6 +1312,25 @@ CaseSpec parse_case_string(const std::string& toml_text, const std::string& disp
   return parse_tree(tree, r, set_overrides, spacing_override);
 }
 
+std::vector<std::string> case_material_files(const std::string& path) {
+  std::vector<std::string> files;
+  toml::table tree;
+  try {
+    tree = toml::parse_file(path);
+  } catch (const toml::parse_error&) {
+    return files;
+  }
+  const toml::table* materials = tree.get_as<toml::table>("materials");
+  if (!materials) return files;
+  const std::filesystem::path base = std::filesystem::path(path).parent_path();
+  for (auto&& [k, v] : *materials) {
+    const toml::table* m = v.as_table();
+    const toml::node* f = m ? m->get("file") : nullptr;
+    if (f && f->as_string()) files.push_back((base / f->as_string()->get()).string());
+  }
+  return files;
+}
+
 CaseSpec load_case_file(const std::string& path, const std::vector<std::string>& set_overrides,
                         const std::string& spacing_override) {
   std::error_code ec;

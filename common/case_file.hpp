@@ -32,4 +32,9 @@ CaseSpec parse_case_string(const std::string& toml_text, const std::string& disp
                            const std::vector<std::string>& set_overrides = {},
                            const std::string& spacing_override = "");
 
+// The material files the case file at `path` reads (`[materials.NAME] file = "PATH"`), resolved against
+// its folder, in the order of the file; empty when there are none or the file is not valid TOML. For the
+// fingerprints of runs, which must change when a material file does.
+std::vector<std::string> case_material_files(const std::string& path);
+
 }  // namespace impactsph

@@ -32,12 +32,16 @@ struct GradientSums {
 // scaling in L^-1), and L_damaged from the scaled one, for the gradients, whose sums it then corrects
 // consistently: a linear field is differentiated exactly over the pairs that still interact, and a rigid
 // rotation beside a failed layer has no strain rate (with the unscaled L it had a deviatoric rate of about
-// 0.08 omega). For an intact neighbourhood the two are the same bits.
+// 0.08 omega). For an intact neighbourhood the two are the same bits. A crack-face pair (crack_face: either
+// side a compressive_crack_face) is left out of the scaled sums altogether: it carries no shear
+// (crack_face_stress), so the intact side must not strain with the failed particles sliding past it
+// either; its gradients are then those of the intact neighbours alone, one-sided and still first-order
+// exact through L_damaged.
 template <class Real>
 IMPACTSPH_HD void add_gradient_pair(GradientSums<Real>& s, Real vol_j, Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> v_ji,
-                                    Real drho_ji, Real damage_i, Real damage_j) {
+                                    Real drho_ji, Real damage_i, Real damage_j, bool crack_face) {
   accumulate_correction(s.L, vol_j, gw, xij);
-  const Real vf = damaged_pair_factor(damage_i, damage_j) * vol_j;
+  const Real vf = crack_face ? Real(0) : damaged_pair_factor(damage_i, damage_j) * vol_j;
   accumulate_correction(s.L_damaged, vf, gw, xij);
   s.G = s.G + vf * outer(v_ji, gw);
   s.grad_rho += (vf * drho_ji) * gw;

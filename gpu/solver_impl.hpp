@@ -804,6 +804,7 @@ class Solver final : public GpuStepper {
       const Vec3p xi = w.x[s];
       const Vec3<Real> vi = w.v[s];
       const Real rhoi = w.rho[s], hi = w.h[s], di = w.damage[s];
+      const bool face_i = di >= Real(1) && compressive_crack_face(mats[w.mat[s]], di);
       const std::int32_t bi = w.body[s];
       Real sum[kGradientSums] = {};
       std::int32_t count = 0;
@@ -819,7 +820,8 @@ class Solver final : public GpuStepper {
           if (!w.pair(bi, w.body[j]).penalty) {  // bodies in penalty contact do not share sums
             const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
             GradientSums<Real> one = GradientSums<Real>::zero();
-            add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi, di, w.damage[j]);
+            const bool face = face_i || (w.damage[j] >= Real(1) && compressive_crack_face(mats[w.mat[j]], w.damage[j]));
+            add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi, di, w.damage[j], face);
             add_flat(sum, one);
           }
         }

@@ -141,6 +141,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     GradientSums<double> sums = GradientSums<double>::zero();
     const Vec3d xi = x_[i], vi = v_[i];
     const double rhoi = rho_[i], hi = hh_[i], di = pair_damage_[i];
+    const bool face_i = crack_face(static_cast<std::size_t>(i));
     const std::int32_t bi = bb_[i];
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int32_t j = nb[k];
@@ -151,7 +152,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       ++pairs;
       if (penalty_between(bi, bb_[j])) continue;  // bodies in penalty contact do not share sums
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi, di, pair_damage_[j]);
+      add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi, di, pair_damage_[j],
+                        face_i || crack_face(static_cast<std::size_t>(j)));
     }
     const CorrectedGradients<double> cg = corrected_gradients(sums, numerics_.correction);
     if (cg.fell_back) ++fallbacks;
@@ -245,9 +247,12 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   }
 }
 
+bool ReferenceSolver::crack_face(std::size_t i) const {
+  return pair_damage_[i] >= 1.0 && compressive_crack_face(materials_[static_cast<std::size_t>(mat_[i])], pair_damage_[i]);
+}
+
 PairSide<double> ReferenceSolver::pair_side(std::size_t i) const {
-  const bool crack_face = compressive_crack_face(materials_[static_cast<std::size_t>(mat_[i])], pair_damage_[i]);
-  return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i], crack_face};
+  return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i], crack_face(i)};
 }
 
 void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {

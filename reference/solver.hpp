@@ -73,6 +73,8 @@ class ReferenceSolver final : public Stepper {
   void check_state(const State& y, double dt) const;
   // What particle or ghost i brings to the pair terms of pass 2.
   PairSide<double> pair_side(std::size_t i) const;
+  // Whether particle i (real or ghost) is a crack face (compressive_crack_face of its material).
+  bool crack_face(std::size_t i) const;
 
   NumericsSpec numerics_;
   std::vector<SymmetryPlaneSpec> symmetry_;

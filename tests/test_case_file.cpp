@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -1174,4 +1175,16 @@ TEST(CaseFileLoad, PlateCasesShareTheWeldoxMaterialFile) {
               a.damage.fracture_energy / (a.damage.band_width_factor * h0_2mm), 1e-9 * a.damage.fracture_energy / h0_2mm);
   const impactsph::Scene fine = impactsph::build_scene(impactsph::load_case_file(cases + "/plate-8mm/case.toml", {}, "1 mm"));
   EXPECT_NEAR(fine.materials[k].damage.critical_plastic_work / coarse.materials[k].damage.critical_plastic_work, 2.0, 1e-12);
+}
+
+// The material files a case reads, for the run fingerprints (app/run_args.cpp): a changed material file
+// must not let a sweep or a ballistic-limit search take an old run as a run of the new inputs.
+TEST(CaseFileLoad, ListsTheMaterialFilesItReads) {
+  const std::string cases = IMPACTSPH_CASES;
+  const std::vector<std::string> files = impactsph::case_material_files(cases + "/plate-8mm/case.toml");
+  ASSERT_FALSE(files.empty());
+  EXPECT_TRUE(std::any_of(files.begin(), files.end(), [](const std::string& f) {
+    return std::filesystem::path(f).filename() == "weldox-460e.toml" && std::filesystem::is_regular_file(f);
+  }));
+  EXPECT_TRUE(impactsph::case_material_files(cases + "/no-such-case.toml").empty());
 }

@@ -201,9 +201,9 @@ TYPED_TEST(DamageTyped, GradientPairScalesWithDamageFactor) {
   const Real drho = Real(35);
   GradientSums<Real> intact = GradientSums<Real>::zero(), half = GradientSums<Real>::zero(),
                      failed = GradientSums<Real>::zero();
-  add_gradient_pair(intact, vol, gw, xij, vji, drho, Real(0), Real(0));
-  add_gradient_pair(half, vol, gw, xij, vji, drho, Real(1), Real(0));
-  add_gradient_pair(failed, vol, gw, xij, vji, drho, Real(1), Real(1));
+  add_gradient_pair(intact, vol, gw, xij, vji, drho, Real(0), Real(0), false);
+  add_gradient_pair(half, vol, gw, xij, vji, drho, Real(1), Real(0), false);
+  add_gradient_pair(failed, vol, gw, xij, vji, drho, Real(1), Real(1), false);
   const double tol = rel_tol<Real>();
   for (int a = 0; a < 3; ++a) {
     for (int b = 0; b < 3; ++b) {
@@ -250,7 +250,10 @@ namespace {
 struct LatticeGradients {
   Mat3<double> consistent, unscaled;
 };
-LatticeGradients gradient_beside_failed_layer(const Mat3<double>& A, int failed_from_layer) {
+// slide: a velocity the failed layer has on top of the field (sliding past i); crack_faces: the failed
+// layer is a crack face (crack_faces = "compression"), whose pairs leave the scaled sums.
+LatticeGradients gradient_beside_failed_layer(const Mat3<double>& A, int failed_from_layer, Vec3<double> slide = {0, 0, 0},
+                                              bool crack_faces = false) {
   const double dx = 1e-3, h = 1.2 * dx, vol = dx * dx * dx;
   const Vec3<double> b{3.0, -2.0, 1.0};
   const auto velocity = [&](Vec3<double> x) { return A * x + b; };
@@ -266,7 +269,8 @@ LatticeGradients gradient_beside_failed_layer(const Mat3<double>& A, int failed_
         if (!(r < kernel_support(h))) continue;
         const Vec3<double> gw = kernel_grad_factor_of<KernelKind::WendlandC2>(r, h) * xij;
         const double dj = k >= failed_from_layer ? 1.0 : 0.0;
-        add_gradient_pair(sums, vol, gw, xij, velocity(xj) - velocity(xi), 0.0, 0.0, dj);
+        const Vec3<double> vj = dj >= 1.0 ? velocity(xj) + slide : velocity(xj);
+        add_gradient_pair(sums, vol, gw, xij, vj - velocity(xi), 0.0, 0.0, dj, crack_faces && dj >= 1.0);
       }
   LatticeGradients g;
   g.consistent = corrected_gradients(sums, CorrectionParams<double>{}).grad_v;
@@ -287,6 +291,20 @@ double deviatoric_rate_norm(const Mat3<double>& grad_v) {
   return std::sqrt(s);
 }
 }  // namespace
+
+TEST(DamagedGradient, IntactParticleDoesNotStrainWithASlidingCrackFace) {
+  const double omega = 1e4;  // 1/s
+  Mat3<double> A = Mat3<double>::zero();
+  A.m[0][1] = -omega; A.m[1][0] = omega;
+  A.m[0][0] = 0.3 * omega;
+  const Vec3<double> slide{50.0, 0.0, 0.0};  // m/s, the failed layer above i slides along x
+  const LatticeGradients faces = gradient_beside_failed_layer(A, 1, slide, true);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(faces.consistent.m[r][c], A.m[r][c], 1e-10 * omega);
+  // Under F 4.10 the half-weight pairs make i shear with the sliding layer: dv_x/dz of order slide / dx.
+  const LatticeGradients scaled = gradient_beside_failed_layer(A, 1, slide, false);
+  EXPECT_GT(std::abs(scaled.consistent.m[0][2]), 0.1 * 50.0 / 1e-3);
+}
 
 TEST(DamagedGradient, RigidRotationBesideFailedLayerHasNoStrainRate) {
   const double omega = 1e4;  // 1/s, about z and x
