@@ -11,7 +11,9 @@
 #   bash cases/plate-8mm/limit-vs-spacing.sh            # run the searches that are missing, then report
 #   REPORT_ONLY=1 bash cases/plate-8mm/limit-vs-spacing.sh
 #
-# Environment: BUILD_DIR (default build), RUNS (default runs/limit-vs-spacing), SEARCHES (default below:
+# Environment: BUILD_DIR (default build), RUNS (default runs/limit-vs-spacing), CALIBRATION (default
+# runs/weldox-calibration-*: the folders of the material file's calibration command, tabulated when
+# present), SEARCHES (default below:
 # "criterion spacing_mm from_m_s to_m_s tolerance_m_s" per line), JOBS (default 2). A search whose
 # ballistic.json exists is not run again (delete its folder, or give RUNS a new name after changing the
 # code). A 2 mm search takes a few minutes on two cores, a 1.333 mm one about half an hour; at 1 mm the
@@ -31,6 +33,7 @@ critical-strain 2 100 190 3
 no-damage 2 150 195 3
 fracture-energy 1.333 100 190 3
 no-damage 1.333 120 190 3"}
+CALIBRATION=${CALIBRATION:-runs/weldox-calibration-*}
 mkdir -p "$RUNS" "$OUT"
 
 if [[ -z "${REPORT_ONLY:-}" ]]; then
@@ -48,10 +51,10 @@ if [[ -z "${REPORT_ONLY:-}" ]]; then
   done <<< "$SEARCHES"
 fi
 
-python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" <<'PY'
-import json, os, subprocess, sys
+python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" "$CALIBRATION" <<'PY'
+import glob, json, os, shlex, subprocess, sys
 
-runs, out, commit = sys.argv[1], sys.argv[2], sys.argv[3]
+runs, out, commit, calibration = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
 experiment = 152.5  # m/s, F's ballistic limit of the 8 mm plate (the validation data)
 rows = []
 for name in sorted(os.listdir(runs)):
@@ -77,8 +80,9 @@ for model, s, b, wall in rows:
         lines.append('| %s | %.3g mm | not bracketed (%s) | | | %d | %.0f |' % (model, s, b.get('status', '?'), len(b['runs']), wall))
         continue
     lo, hi = b['bracket_m_s']
-    lines.append('| %s | %.3g mm | %.1f m/s | %.2f-%.2f m/s | %+.1f %% | %d | %.0f |' % (
-        model, s, b['limit_m_s'], lo, hi, 100 * (b['limit_m_s'] / experiment - 1), len(b['runs']), wall))
+    unfinished = '' if b.get('status') == 'done' else ' (search %s: the bracket so far)' % b.get('status')
+    lines.append('| %s | %.3g mm | %.1f m/s%s | %.2f-%.2f m/s | %+.1f %% | %d | %.0f |' % (
+        model, s, b['limit_m_s'], unfinished, lo, hi, 100 * (b['limit_m_s'] / experiment - 1), len(b['runs']), wall))
 lines += ['', 'Perforating runs (impact speed: residual velocity; plug mass and speed):', '']
 for model, s, b, wall in rows:
     perf = [r for r in b['runs'] if r.get('perforated')]
@@ -87,7 +91,19 @@ for model, s, b, wall in rows:
     lines.append('- %s at %.3g mm: %s' % (model, s, '; '.join(items) if items else 'none'))
 lines += ['', 'Searches:', '']
 for model, s, b, wall in rows:
-    lines.append('- %s at %.3g mm: `%s`' % (model, s, b['command_line']))
+    lines.append('- %s at %.3g mm: `%s`' % (model, s, shlex.join(b['command_line'])))
+cal = sorted(glob.glob(os.path.join(calibration, 'ballistic.json')))
+if cal:
+    lines += ['', 'The calibration command of cases/materials/weldox-460e.toml (1 mm, 149.5 and 155.5 m/s) at the '
+              'Gammas tried, from %s:' % calibration, '',
+              '| overrides | status | runs (impact speed: perforated, residual velocity, plug, wall) |', '|---|---|---|']
+    for path in cal:
+        b = json.load(open(path))
+        items = ['%.2f: %s, %.1f m/s, %.1f g, %.0f s' % (r['v_impact_m_s'], 'yes' if r.get('perforated') else 'no',
+                                                        r.get('residual_velocity_m_s', float('nan')),
+                                                        1e3 * r.get('plug_mass_kg', float('nan')), r['wall_s'])
+                 for r in b['runs'] if 'v_impact_m_s' in r]
+        lines.append('| %s | %s | %s |' % (', '.join('`%s`' % x for x in b['set']), b['status'], '; '.join(items)))
 open(os.path.join(out, 'report.md'), 'w').write('\n'.join(lines) + '\n')
 
 data = os.path.join(out, 'limit_vs_spacing.dat')
