@@ -2,6 +2,8 @@
 // of the chosen damage model, what a failed particle may still carry, and the damaged pair factor.
 // D is dimensionless in [0, 1]; stresses and pressures in Pa, strain rates in 1/s, temperatures in K.
 #pragma once
+#include <cstdint>
+
 #include "common/material.hpp"
 
 namespace impactsph {
@@ -155,10 +157,13 @@ template <class Real> IMPACTSPH_HD Real pair_damage(const MaterialParams<Real>& 
   return m.damage.scale_pairs ? D : Real(0);
 }
 
-// Whether particle i, at pair damage D (pair_damage), is a crack face whose pairs carry compression only
-// (DamageParams::compressive_crack_faces): it has failed and its material asks for it.
-template <class Real> IMPACTSPH_HD bool compressive_crack_face(const MaterialParams<Real>& m, Real D) {
-  return D >= Real(1) && m.damage.compressive_crack_faces;
+// Whether a particle of material `material` (an index into `materials`) at pair damage D (pair_damage) is a
+// crack face whose pairs carry compression only (DamageParams::compressive_crack_faces): it has failed and
+// its material asks for it. The material is looked up only for a failed particle, so the pair loops of both
+// solvers can ask it of every neighbour.
+template <class Real>
+IMPACTSPH_HD bool compressive_crack_face(const MaterialParams<Real>* materials, std::int32_t material, Real D) {
+  return D >= Real(1) && materials[material].damage.compressive_crack_faces;
 }
 
 // Damaged interaction (F eq 4.10): the kernel and its gradient between i and j are scaled by

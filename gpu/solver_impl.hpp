@@ -804,7 +804,7 @@ class Solver final : public GpuStepper {
       const Vec3p xi = w.x[s];
       const Vec3<Real> vi = w.v[s];
       const Real rhoi = w.rho[s], hi = w.h[s], di = w.damage[s];
-      const bool face_i = di >= Real(1) && compressive_crack_face(mats[w.mat[s]], di);
+      const bool face_i = compressive_crack_face(mats, w.mat[s], di);
       const std::int32_t bi = w.body[s];
       Real sum[kGradientSums] = {};
       std::int32_t count = 0;
@@ -820,7 +820,7 @@ class Solver final : public GpuStepper {
           if (!w.pair(bi, w.body[j]).penalty) {  // bodies in penalty contact do not share sums
             const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
             GradientSums<Real> one = GradientSums<Real>::zero();
-            const bool face = face_i || (w.damage[j] >= Real(1) && compressive_crack_face(mats[w.mat[j]], w.damage[j]));
+            const bool face = face_i || compressive_crack_face(mats, w.mat[j], w.damage[j]);
             add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi, di, w.damage[j], face);
             add_flat(sum, one);
           }
@@ -869,7 +869,7 @@ class Solver final : public GpuStepper {
       const std::int32_t mi = w.mat[s], bi = w.body[s];
       const MaterialParams<Real>& mat_i = mats[mi];
       const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi,
-                                  compressive_crack_face(mat_i, w.damage[s])};
+                                  compressive_crack_face(mats, mi, w.damage[s])};
       const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
       Real sum[5] = {};  // acceleration x, y, z; energy rate; delta-SPH diffusion
       IMPACTSPH_SIMD_SUMS(sum[:5])
@@ -881,7 +881,7 @@ class Solver final : public GpuStepper {
         if (r < kernel_support(hij) && !w.pair(bi, w.body[j]).penalty) {
           const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
           const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j],
-                                      compressive_crack_face(mats[w.mat[j]], w.damage[j])};
+                                      compressive_crack_face(mats, w.mat[j], w.damage[j])};
           Vec3<Real> acc{0, 0, 0};
           Real de = 0;
           add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], acc, de);

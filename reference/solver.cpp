@@ -248,7 +248,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
 }
 
 bool ReferenceSolver::crack_face(std::size_t i) const {
-  return pair_damage_[i] >= 1.0 && compressive_crack_face(materials_[static_cast<std::size_t>(mat_[i])], pair_damage_[i]);
+  return compressive_crack_face(materials_.data(), mat_[i], pair_damage_[i]);
 }
 
 PairSide<double> ReferenceSolver::pair_side(std::size_t i) const {

@@ -451,13 +451,15 @@ TEST(CrackFace, CarriesOnlyCompressionAcrossAFailedParticle) {
 }
 
 TEST(CrackFace, OnlyFailedParticlesOfMaterialsThatAskForIt) {
-  MaterialParams<double> m;
-  m.damage.kind = DamageKind::FractureEnergy;
-  EXPECT_FALSE(compressive_crack_face(m, 1.0));
-  m.damage.compressive_crack_faces = true;
-  EXPECT_TRUE(compressive_crack_face(m, 1.0));
-  EXPECT_FALSE(compressive_crack_face(m, 0.999));
-  EXPECT_FALSE(compressive_crack_face(m, pair_damage(MaterialParams<double>{}, 0.0)));
+  MaterialParams<double> m[2];
+  m[0].damage.kind = m[1].damage.kind = DamageKind::FractureEnergy;
+  m[1].damage.compressive_crack_faces = true;
+  EXPECT_FALSE(compressive_crack_face(m, 0, 1.0));
+  EXPECT_TRUE(compressive_crack_face(m, 1, 1.0));
+  EXPECT_FALSE(compressive_crack_face(m, 1, 0.999));
+  MaterialParams<double> unscaled = m[1];  // pair_factor = false: its pair damage is 0, so never a face
+  unscaled.damage.scale_pairs = false;
+  EXPECT_FALSE(compressive_crack_face(&unscaled, 0, pair_damage(unscaled, 1.0)));
 }
 
 }  // namespace
