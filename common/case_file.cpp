@@ -985,7 +985,9 @@ const Keys kPictureFields{"plastic_strain", "damage", "speed", "pressure"};
 void read_numerics(const View& root, NumericsSpec& num) {
   const View n = root.sub("numerics", "[numerics]", "[numerics] with spacing = \"0.5 mm\"");
   n.allow({"spacing", "kernel", "h_factor", "viscosity_linear", "viscosity_quadratic", "viscosity_balsara",
-           "bulk_viscosity_linear", "bulk_viscosity_quadratic", "delta", "cfl", "correction_max_condition"});
+           "bulk_viscosity_linear", "bulk_viscosity_quadratic", "artificial_stress", "artificial_stress_exponent", "artificial_stress_of",
+           "delta",
+           "cfl", "correction_max_condition"});
   num.spacing = n.quantity("spacing", Dimension::Length);
   num.spacing_line = line_of(n.find("spacing"));
   n.positive("spacing", num.spacing, Dimension::Length);
@@ -1002,6 +1004,15 @@ void read_numerics(const View& root, NumericsSpec& num) {
   n.range("bulk_viscosity_linear", num.bulk_viscosity.linear, 0, 5, Dimension::Dimensionless);
   num.bulk_viscosity.quadratic = n.number_or("bulk_viscosity_quadratic", 0.0);
   n.range("bulk_viscosity_quadratic", num.bulk_viscosity.quadratic, 0, 5, Dimension::Dimensionless);
+  num.artificial_stress = n.number_or("artificial_stress", 0.0);
+  n.range("artificial_stress", num.artificial_stress, 0, 1, Dimension::Dimensionless);
+  const double exponent = n.number_or("artificial_stress_exponent", 4.0);
+  n.range("artificial_stress_exponent", exponent, 1, 8, Dimension::Dimensionless);
+  if (exponent != std::floor(exponent))
+    n.fail("artificial_stress_exponent", "must be a whole number such as 4 (Gray, Monaghan and Swift 2001), got " +
+                                             format_quantity(exponent, Dimension::Dimensionless));
+  num.artificial_stress_exponent = static_cast<int>(exponent);
+  num.artificial_stress_deviatoric = n.choice("artificial_stress_of", {"deviatoric", "total"}, "deviatoric") == "deviatoric";
   num.delta = n.number_or("delta", 0.1);
   n.range("delta", num.delta, 0, 1, Dimension::Dimensionless);
   num.cfl = n.number_or("cfl", 0.2);

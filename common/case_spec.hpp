@@ -96,6 +96,9 @@ struct NumericsSpec {
   ViscosityParams<double> viscosity{1.0, 1.0};
   bool viscosity_balsara = false;  // scale the viscosity by the Balsara shear limiter (viscosity.hpp)
   BulkViscosityParams<double> bulk_viscosity{};  // volumetric viscosity in compression (viscosity.hpp); 0, 0: off
+  double artificial_stress = 0;        // epsilon of the artificial stress (artificial_stress.hpp); 0: off
+  int artificial_stress_exponent = 4;  // its n
+  bool artificial_stress_deviatoric = true;  // R from the tensile principal deviatoric stresses (false: total stress)
   double delta = 0.1;          // delta-SPH coefficient (F Table 3)
   double cfl = 0.2;            // C_CFL of F eq 5.1
   CorrectionParams<double> correction{};

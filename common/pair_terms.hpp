@@ -3,6 +3,7 @@
 // (neighbour lists in the reference, cell gathers in the gpu port) belong to the solvers.
 // Notation: x_ij = x_i - x_j (m), v_ij = v_i - v_j (m/s), V_j = m_j / rho_j (m^3), gw = grad_i W_ij (1/m^4).
 #pragma once
+#include "common/artificial_stress.hpp"
 #include "common/correction.hpp"
 #include "common/damage.hpp"
 #include "common/delta_sph.hpp"
@@ -83,6 +84,7 @@ struct PairSide {
   Real sound_speed;      // m/s
   Real rho;              // kg/m^3
   bool crack_face;       // failed, with pairs that carry compression only (compressive_crack_face)
+  Mat3<Real> R;          // artificial stress (artificial_stress.hpp), units of A; zero when off
 };
 
 // The pair stress of a crack face (either side a crack_face): the compressive mean stresses of the two
@@ -98,20 +100,23 @@ template <class Real> IMPACTSPH_HD Mat3<Real> crack_face_stress(const Mat3<Real>
 
 // Neighbour j's share of the momentum (F 2.11) and energy (consistent F 2.12) rates of i, with the
 // symmetrised corrected gradient gt = (1 - D_ij)(L_i^-1 + L_j^-1)/2 gw (F 2.14, F 4.10) and the Monaghan
-// viscosity Pi_ij (F 2.16-2.17, scaled by the pair mean of the Balsara factors):
-//   dv_i/dt += m_j (A_i + A_j - Pi_ij I) gt   (m/s^2),
-//   de_i/dt -= m_j/2 v_ij . (A_i + A_j - Pi_ij I) gt   (J/kg/s);
-// at a crack face A_i + A_j becomes crack_face_stress(A_i, A_j).
+// viscosity Pi_ij (F 2.16-2.17, scaled by the pair mean of the Balsara factors) and the artificial stress
+// (R_i + R_j) f_ij^n (Gray, Monaghan and Swift 2001; stress_factor = f_ij^n, 0 when off):
+//   dv_i/dt += m_j (A_i + A_j + (R_i + R_j) f_ij^n - Pi_ij I) gt   (m/s^2),
+//   de_i/dt -= m_j/2 v_ij . (A_i + A_j + (R_i + R_j) f_ij^n - Pi_ij I) gt   (J/kg/s);
+// at a crack face A_i + A_j becomes crack_face_stress(A_i, A_j) and carries no artificial stress.
 // h_ij is the pair smoothing length (m), m_j the mass of j (kg).
 template <class Real>
 IMPACTSPH_HD void add_momentum_energy_pair(const PairSide<Real>& i, const PairSide<Real>& j, const ViscosityParams<Real>& visc,
                                            Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> vij, Real hij, Real m_j,
-                                           Vec3<Real>& acc, Real& de) {
+                                           Real stress_factor, Vec3<Real>& acc, Real& de) {
   const Vec3<Real> gt = (Real(0.5) * damaged_pair_factor(i.damage, j.damage)) * ((i.l_inverse + j.l_inverse) * gw);
   const Real pi_ij = Real(0.5) * (i.av_factor + j.av_factor) *
                      monaghan_viscosity(visc, xij, vij, hij, Real(0.5) * (i.sound_speed + j.sound_speed),
                                         Real(0.5) * (i.rho + j.rho));
-  Mat3<Real> T = i.crack_face || j.crack_face ? crack_face_stress(i.A, j.A) : i.A + j.A;
+  const bool face = i.crack_face || j.crack_face;
+  Mat3<Real> T = face ? crack_face_stress(i.A, j.A) : i.A + j.A;
+  if (stress_factor > Real(0) && !face) T = T + stress_factor * (i.R + j.R);
   T.m[0][0] -= pi_ij; T.m[1][1] -= pi_ij; T.m[2][2] -= pi_ij;
   const Vec3<Real> tg = T * gt;
   acc += m_j * tg;

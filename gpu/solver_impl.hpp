@@ -173,6 +173,7 @@ struct Params {
   bool balsara;
   BulkViscosityParams<Real> bulk;  // volumetric viscosity in compression (common/viscosity.hpp)
   bool bulk_on;
+  ArtificialStressParams<Real> art;  // artificial stress against the tensile instability (common/artificial_stress.hpp)
   int body_count;
   int plane_count;
   Plane planes[kMaxPlanes];
@@ -297,6 +298,9 @@ class Solver final : public GpuStepper {
     params_.bulk = BulkViscosityParams<Real>{static_cast<Real>(numerics_.bulk_viscosity.linear),
                                              static_cast<Real>(numerics_.bulk_viscosity.quadratic)};
     params_.bulk_on = numerics_.bulk_viscosity.linear > 0 || numerics_.bulk_viscosity.quadratic > 0;
+    params_.art = make_artificial_stress(static_cast<Real>(numerics_.artificial_stress), numerics_.artificial_stress_exponent,
+                                         numerics_.kernel, static_cast<Real>(numerics_.h_factor),
+                                         numerics_.artificial_stress_deviatoric);
     params_.body_count = static_cast<int>(scene.bodies.size());
     params_.plane_count = static_cast<int>(scene.spec.symmetry.size());
     for (int k = 0; k < params_.plane_count; ++k) {
@@ -696,7 +700,7 @@ class Solver final : public GpuStepper {
     const std::size_t t = static_cast<std::size_t>(total);
     wx_.resize(t); wv_.resize(t); wrho_.resize(t); wp_.resize(t); wc_.resize(t); wm_.resize(t); wh_.resize(t);
     wvol_.resize(t); wA_.resize(t); wS_.resize(t); wmat_.resize(t); wbody_.resize(t); wdamage_.resize(t);
-    wlinv_.resize(t); wgrad_rho_.resize(t); wav_.resize(t);
+    wlinv_.resize(t); wgrad_rho_.resize(t); wav_.resize(t); wR_.resize(params_.art.on() ? t : 0);
     sorted_ = true;
     stats_.ghosts = static_cast<std::size_t>(ghosts_);
   }
@@ -708,6 +712,7 @@ class Solver final : public GpuStepper {
     Real *rho, *p, *c, *m, *h, *vol, *damage, *av;
     Sym3<Real>* A;  // (S - P I) / rho^2
     Sym3<Real>* S;  // deviatoric stress after apply_failure
+    Sym3<Real>* R;  // artificial stress (null when off)
     std::int32_t *mat, *body;
     Mat3<Real>* linv;
     Vec3<Real>* grad_rho;
@@ -726,7 +731,7 @@ class Solver final : public GpuStepper {
   };
   Work work() {
     return Work{raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
-                raw(wav_), raw(wA_), raw(wS_), raw(wmat_), raw(wbody_), raw(wlinv_), raw(wgrad_rho_),
+                raw(wav_), raw(wA_), raw(wS_), params_.art.on() ? raw(wR_) : nullptr, raw(wmat_), raw(wbody_), raw(wlinv_), raw(wgrad_rho_),
                 raw(list_offset_), raw(list_), raw(contacts_), params_.body_count};
   }
 
@@ -789,6 +794,7 @@ class Solver final : public GpuStepper {
       w.vol[s] = mass[i] / rho;
       const Real inv_rho2 = Real(1) / (rho * rho);
       w.A[s] = inv_rho2 * Sym3<Real>{S.xx - P, S.yy - P, S.zz - P, S.xy, S.yz, S.zx};
+      if (prm.art.on()) w.R[s] = artificial_stress(prm.art, w.A[s]);  // before any viscosity joins A
     });
 
     clock_.end(PhaseClock::Gather);
@@ -869,7 +875,8 @@ class Solver final : public GpuStepper {
       const std::int32_t mi = w.mat[s], bi = w.body[s];
       const MaterialParams<Real>& mat_i = mats[mi];
       const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi,
-                                  compressive_crack_face(mats, mi, w.damage[s])};
+                                  compressive_crack_face(mats, mi, w.damage[s]),
+                                  prm.art.on() ? w.R[s].full() : Mat3<Real>::zero()};
       const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
       Real sum[5] = {};  // acceleration x, y, z; energy rate; delta-SPH diffusion
       IMPACTSPH_SIMD_SUMS(sum[:5])
@@ -881,10 +888,12 @@ class Solver final : public GpuStepper {
         if (r < kernel_support(hij) && !w.pair(bi, w.body[j]).penalty) {
           const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
           const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j],
-                                      compressive_crack_face(mats, w.mat[j], w.damage[j])};
+                                      compressive_crack_face(mats, w.mat[j], w.damage[j]),
+                                      prm.art.on() ? w.R[j].full() : Mat3<Real>::zero()};
+          const Real stress_factor = prm.art.on() ? artificial_stress_pair_factor(prm.art, K, r, hij) : Real(0);
           Vec3<Real> acc{0, 0, 0};
           Real de = 0;
-          add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], acc, de);
+          add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], stress_factor, acc, de);
           sum[0] += acc.x;
           sum[1] += acc.y;
           sum[2] += acc.z;
@@ -1088,7 +1097,7 @@ class Solver final : public GpuStepper {
   DVec<Vec3p> wx_;
   DVec<Vec3<Real>> wv_, wgrad_rho_;
   DVec<Real> wrho_, wp_, wc_, wm_, wh_, wvol_, wdamage_, wav_;
-  DVec<Sym3<Real>> wA_, wS_;
+  DVec<Sym3<Real>> wA_, wS_, wR_;
   DVec<std::int32_t> wmat_, wbody_;
   DVec<Mat3<Real>> wlinv_;
   // Copies back to the host, in the scene's order.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/artificial_stress.hpp"
 #include "common/contact.hpp"
 #include "common/correction.hpp"
 #include "common/damage.hpp"
@@ -127,6 +128,16 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     const Sym3d& s = stress[i];
     s_over_rho2_[i] = inv_rho2 * Sym3d{s.xx - pressure_[i], s.yy - pressure_[i], s.zz - pressure_[i], s.xy, s.yz, s.zx};
   }
+  // Artificial stress of each particle and ghost from its own stress, before any viscosity joins it.
+  const ArtificialStressParams<double> art = make_artificial_stress(
+      numerics_.artificial_stress, numerics_.artificial_stress_exponent, numerics_.kernel, numerics_.h_factor,
+      numerics_.artificial_stress_deviatoric);
+  artificial_stress_.resize(art.on() ? total : 0);
+  if (art.on()) {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(total); ++i)
+      artificial_stress_[i] = artificial_stress(art, s_over_rho2_[i]);
+  }
 
   const KernelKind kernel = numerics_.kernel;
   const std::int64_t* off = neighbours_.offsets.data();
@@ -228,7 +239,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       const double r = norm(xij);
       if (r >= kernel_support(hij)) continue;
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      add_momentum_energy_pair(side_i, pair_side(j), visc, gw, xij, vi - v_[j], hij, m_[j], acc, de);
+      const double stress_factor = art.on() ? artificial_stress_pair_factor(art, kernel, r, hij) : 0.0;
+      add_momentum_energy_pair(side_i, pair_side(j), visc, gw, xij, vi - v_[j], hij, m_[j], stress_factor, acc, de);
       if (mat_[j] == mi)
         diffusion += damaged_delta_sph_term(side_i.damage, pair_damage_[j], volume_[j], rhoi, rho_[j], xij, gri,
                                             grad_rho_[j], gw);
@@ -252,7 +264,8 @@ bool ReferenceSolver::crack_face(std::size_t i) const {
 }
 
 PairSide<double> ReferenceSolver::pair_side(std::size_t i) const {
-  return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i], crack_face(i)};
+  return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i], crack_face(i),
+          artificial_stress_.empty() ? Mat3d::zero() : artificial_stress_[i].full()};
 }
 
 void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {

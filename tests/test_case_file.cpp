@@ -197,7 +197,8 @@ axis = "y"
   const std::string t2 = with("spacing = \"0.5 mm\"",
                               "spacing = \"0.5 mm\"\nkernel = \"cubic-spline\"\nh_factor = 1.5\ncfl = 0.3\n"
                               "viscosity_linear = 0.5\nviscosity_quadratic = 2\ndelta = 0\ncorrection_max_condition = 50\n"
-                              "bulk_viscosity_linear = 0.5\nbulk_viscosity_quadratic = 1",
+                              "bulk_viscosity_linear = 0.5\nbulk_viscosity_quadratic = 1\n"
+                              "artificial_stress = 0.3\nartificial_stress_exponent = 6\nartificial_stress_of = \"total\"",
                               with("output_interval = \"1 us\"",
                                    "output_interval = \"1 us\"\nframe_interval = \"0.5 us\"\ncheckpoint_interval = \"10 us\"",
                                    toml));
@@ -205,6 +206,12 @@ axis = "y"
   EXPECT_DOUBLE_EQ(s.numerics.bulk_viscosity.linear, 0.5);
   EXPECT_DOUBLE_EQ(s.numerics.bulk_viscosity.quadratic, 1);
   EXPECT_DOUBLE_EQ(parse_case_string(toml, "case.toml").numerics.bulk_viscosity.linear, 0);  // off by default
+  EXPECT_DOUBLE_EQ(s.numerics.artificial_stress, 0.3);
+  EXPECT_EQ(s.numerics.artificial_stress_exponent, 6);
+  EXPECT_FALSE(s.numerics.artificial_stress_deviatoric);
+  EXPECT_TRUE(parse_case_string(toml, "case.toml").numerics.artificial_stress_deviatoric);
+  EXPECT_DOUBLE_EQ(parse_case_string(toml, "case.toml").numerics.artificial_stress, 0);  // off by default
+  EXPECT_EQ(parse_case_string(toml, "case.toml").numerics.artificial_stress_exponent, 4);
   EXPECT_FALSE(s.output.vtu);
   EXPECT_TRUE(s.output.csv);
   ASSERT_EQ(s.fixed.size(), 2u);
@@ -592,6 +599,11 @@ TEST(CaseFileErrors, NumericsOutOfRange) {
       {"viscosity_quadratic = -1", "numerics.viscosity_quadratic", "must not be negative"},
       {"bulk_viscosity_linear = -0.5", "numerics.bulk_viscosity_linear", "at least 0"},
       {"bulk_viscosity_quadratic = 6", "numerics.bulk_viscosity_quadratic", "at most 5"},
+      {"artificial_stress = 1.5", "numerics.artificial_stress", "at most 1"},
+      {"artificial_stress = -0.3", "numerics.artificial_stress", "at least 0"},
+      {"artificial_stress_exponent = 0", "numerics.artificial_stress_exponent", "at least 1"},
+      {"artificial_stress_exponent = 4.5", "numerics.artificial_stress_exponent", "whole number"},
+      {"artificial_stress_of = \"mean\"", "numerics.artificial_stress_of", "\"deviatoric\", \"total\""},
       {"correction_max_condition = 2", "numerics.correction_max_condition", "greater than 3"},
   };
   for (const Case& c : cases) {

@@ -427,8 +427,8 @@ TEST(CrackFace, CarriesOnlyCompressionAcrossAFailedParticle) {
     double de = 0;
     on_i = Vec3<double>{0, 0, 0};
     on_j = Vec3<double>{0, 0, 0};
-    add_momentum_energy_pair(i, j, no_visc, gw, xij, vij, h, m, on_i, de);
-    add_momentum_energy_pair(j, i, no_visc, -1.0 * gw, -1.0 * xij, -1.0 * vij, h, m, on_j, de);
+    add_momentum_energy_pair(i, j, no_visc, gw, xij, vij, h, m, 0.0, on_i, de);
+    add_momentum_energy_pair(j, i, no_visc, -1.0 * gw, -1.0 * xij, -1.0 * vij, h, m, 0.0, on_j, de);
   };
   Vec3<double> on_i, on_j;
   pair(shear_tension, failed_compressed, false, on_i, on_j);
@@ -444,8 +444,8 @@ TEST(CrackFace, CarriesOnlyCompressionAcrossAFailedParticle) {
   const PairSide<double> j{failed_compressed, Mat3<double>::identity(), 1.0, 1, 5000, rho, true};
   Vec3<double> a{0, 0, 0}, b{0, 0, 0};
   double de = 0;
-  add_momentum_energy_pair(i, j, no_visc, gw, xij, vij, h, m, a, de);
-  add_momentum_energy_pair(j, i, no_visc, gw, xij, vij, h, m, b, de);
+  add_momentum_energy_pair(i, j, no_visc, gw, xij, vij, h, m, 0.0, a, de);
+  add_momentum_energy_pair(j, i, no_visc, gw, xij, vij, h, m, 0.0, b, de);
   EXPECT_EQ(a.x, b.x);
   EXPECT_EQ(a.y, b.y);
 }

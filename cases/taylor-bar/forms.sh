@@ -23,7 +23,9 @@ mkdir -p "$RUNS"
 BULK="--set numerics.bulk_viscosity_linear=0.5 --set numerics.bulk_viscosity_quadratic=1"
 FORMS="monaghan|
 bulk|--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0 $BULK
-bulk-balsara|--set numerics.viscosity_balsara=true $BULK"
+bulk-balsara|--set numerics.viscosity_balsara=true $BULK
+monaghan-as|--set numerics.artificial_stress=0.3
+bulk-as|--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0 $BULK --set numerics.artificial_stress=0.3"
 
 if [[ -z "${REPORT_ONLY:-}" ]]; then
   while IFS='|' read -r form sets; do
