@@ -104,7 +104,7 @@ void print_scene(const Scene& scene, double dt) {
   }
   print_geometry_warnings(scene, stdout);
   for (const SymmetryPlaneSpec& p : s.symmetry)
-    std::printf("symmetry  plane %c = %.6g mm\n", "xyz"[p.axis], p.position * 1e3);
+    std::printf("%s plane %c = %.6g mm\n", p.wall ? "wall     " : "symmetry ", "xyz"[p.axis], p.position * 1e3);
   const double steps = dt > 0 ? s.time.end / dt : 0;
   std::printf("\ntime      end %.6g us, output every %.6g us\n", s.time.end * 1e6, s.time.output_interval * 1e6);
   std::printf("step      estimated dt %.4g ns (CFL %.3g), about %.0f steps, %.3g particle-steps\n", dt * 1e9,

@@ -98,7 +98,7 @@ Cut choose_cut(const Scene& scene, const ParticleSet& p, int body) {
     const int a = k == 0 ? c.h : c.v;
     int planes = 0;
     for (const SymmetryPlaneSpec& sp : s.symmetry)
-      if (sp.axis == a) {
+      if (sp.axis == a && !sp.wall) {  // a wall is no plane of symmetry: nothing is mirrored across it
         ++planes;
         c.mirror_at[k] = sp.position;
       }

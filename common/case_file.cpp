@@ -859,10 +859,11 @@ void read_boundaries(const View& root, CaseSpec& spec) {
   const toml::node* n = root.find("boundaries");
   if (!n) return;
   if (!n->is_table())
-    root.fail("boundaries", "expected a table holding [[boundaries.fixed]] and [[boundaries.symmetry]], not " + type_name(*n));
+    root.fail("boundaries", "expected a table holding [[boundaries.fixed]], [[boundaries.symmetry]] and "
+                            "[[boundaries.wall]], not " + type_name(*n));
   const Reporter& r = root.values().reporter();
   const View bnd(r, *n->as_table(), "boundaries", "boundaries");
-  bnd.allow({"fixed", "symmetry"});
+  bnd.allow({"fixed", "symmetry", "wall"});
 
   Keys body_names;
   for (const BodySpec& b : spec.bodies) body_names.push_back(b.name);
@@ -894,18 +895,24 @@ void read_boundaries(const View& root, CaseSpec& spec) {
       spec.fixed.push_back(reg);
     }
   }
-  if (const toml::array* a = array_of_tables(bnd, "symmetry", "axis and position")) {
+  // Symmetry planes, then walls (mirror planes that push but do not pull), into one list of planes.
+  for (const char* kind : {"symmetry", "wall"}) {
+    const bool wall = std::string(kind) == "wall";
+    const toml::array* a = array_of_tables(bnd, kind, "axis and position");
+    if (!a) continue;
     for (std::size_t i = 0; i < a->size(); ++i) {
-      const View s(r, *a->get(i)->as_table(), "boundaries.symmetry[" + std::to_string(i) + "]", "a symmetry plane");
-      s.allow({"axis", "position"});
       SymmetryPlaneSpec plane;
+      plane.wall = wall;
+      plane.key = "boundaries." + std::string(kind) + "[" + std::to_string(i) + "]";
+      const View s(r, *a->get(i)->as_table(), plane.key, wall ? "a rigid wall" : "a symmetry plane");
+      s.allow({"axis", "position"});
       plane.line = line_of(a->get(i));
       plane.axis = s.axis("axis");
       plane.position = s.quantity_or("position", Dimension::Length, 0.0);
-      for (std::size_t j = 0; j < spec.symmetry.size(); ++j)
-        if (spec.symmetry[j].axis == plane.axis && spec.symmetry[j].position == plane.position)
+      for (const SymmetryPlaneSpec& other : spec.symmetry)
+        if (other.axis == plane.axis && other.position == plane.position)
           s.fail(s.has("position") ? "position" : "axis",
-                 "the same plane as boundaries.symmetry[" + std::to_string(j) + "]; each plane is given once");
+                 "the same plane as " + other.key + "; each plane is given once");
       spec.symmetry.push_back(plane);
     }
   }

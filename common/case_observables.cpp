@@ -68,7 +68,8 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
   CaseObservables out;
 
   if (os.taylor_bar_index >= 0) {
-    // The wall is the symmetry plane normal to the bar's axis; the bar rests on it.
+    // The wall is the plane (a wall, or a symmetry plane) normal to the bar's axis; the bar rests on it, or
+    // has left it (a wall that does not pull): the gap between the wall and the bar's face is not counted.
     const int body = os.taylor_bar_index;
     const BodySpec& b = spec.bodies[static_cast<std::size_t>(body)];
     const int axis = b.shape == Shape::Cylinder ? b.axis : 2;
@@ -78,11 +79,16 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
     // The bar's lattice: layers dz apart along its axis, cross-section spacing ds (scene.cpp).
     const Vec3d& cell = scene.bodies[static_cast<std::size_t>(body)].lattice_spacing;
     const double dz = cell[axis], ds = cell[(axis + 1) % 3];
-    // The outermost centre radius and the volume of the layer within dz of the wall.
+    // The gap: how far the nearest centre lies beyond half a layer from the wall (0 on the wall).
+    double near = 1e300;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.body[i] == body) near = std::min(near, std::abs(p.pos[i][axis] - wall));
+    const double gap = std::max(0.0, near - 0.5 * dz);
+    // The outermost centre radius and the volume of the layer within dz of the face.
     double far = 0, r_face = 0, layer_volume = 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (p.body[i] != body) continue;
-      const double along = std::abs(p.pos[i][axis] - wall);
+      const double along = std::abs(p.pos[i][axis] - wall) - gap;
       far = std::max(far, along);
       if (along < dz) {
         double r2 = 0;

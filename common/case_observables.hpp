@@ -11,7 +11,7 @@ namespace impactsph {
 
 struct CaseObservables {
   bool taylor_bar = false;
-  double final_length = 0;          // m, from the wall plane to the far end of the bar
+  double final_length = 0;          // m, from the face (on the wall, or after it left the wall) to the far end
   double impact_face_diameter = 0;  // m, of the layer of particles on the wall: 2 (r_max + ds/2)
   // Two face measures without the lattice's bias (issue 19), both 2 R0 at t = 0:
   double impact_face_diameter_shifted = 0;  // m, 2 (r_max(t) + R0 - r_max(0)), r_max of the wall layer's centres

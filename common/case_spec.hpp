@@ -67,11 +67,14 @@ struct FixedRegionSpec {
 };
 
 // Mirror plane x_axis = position; the model lies on one side of it (build_scene decides which from the
-// bodies and clips bodies that reach across it to that side).
+// bodies and clips bodies that reach across it to that side). A wall ([[boundaries.wall]]) is a mirror
+// plane that pushes but does not pull (presses_on_wall, common/integration.hpp); no body may reach across it.
 struct SymmetryPlaneSpec {
   int axis = 0;
   double position = 0;
-  int line = 0;  // line of its [[boundaries.symmetry]] header, for messages (0: unknown)
+  bool wall = false;
+  int line = 0;  // line of its [[boundaries.symmetry]] or [[boundaries.wall]] header, for messages (0: unknown)
+  std::string key;  // its table in the case file, e.g. "boundaries.wall[0]", for messages (empty: unknown)
 };
 
 // How two bodies interact. Pairs not listed share the SPH sums (particle approximation across bodies,

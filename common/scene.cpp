@@ -140,6 +140,12 @@ bool strictly_inside(const BodySpec& b, const Vec3d& p, double eps) {
   return rin > 0 && r2 < rin * rin;
 }
 
+// The table of plane s in the case file, for messages: "boundaries.symmetry[0]", "boundaries.wall[0]".
+std::string plane_key(const CaseSpec& spec, std::size_t s) {
+  const SymmetryPlaneSpec& plane = spec.symmetry[s];
+  return plane.key.empty() ? "boundaries.symmetry[" + std::to_string(s) + "]" : plane.key;
+}
+
 // Where the symmetry planes on `axis` cut the interval (lo, hi) strictly inside it.
 std::vector<double> cuts_inside(const CaseSpec& spec, int axis, double lo, double hi, double dx) {
   std::vector<double> cuts;
@@ -286,7 +292,7 @@ BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const s
       throw CaseError(spec.source_file, b.line, key + ".file",
                       body_name(spec, k) + " (" + b.mesh_file + ") is not symmetric about the plane " +
                           axis_name(plane.axis) + " = " + format_quantity(plane.position, Dimension::Length) +
-                          " (boundaries.symmetry[" + std::to_string(s) + "]): the mirror images of " +
+                          " (" + plane_key(spec, s) + "): the mirror images of " +
                           std::to_string(unmatched) + " of its " + std::to_string(out.pts.size()) +
                           " particles lie outside it, but the solver mirrors the model across that plane; move "
                           "the mesh (origin) so the plane is one of its planes of symmetry, or model the whole "
@@ -502,13 +508,13 @@ std::vector<int> clip_to_symmetry(const CaseSpec& spec, std::vector<BodyLattice>
   auto where = [&](std::size_t s) {
     const SymmetryPlaneSpec& plane = spec.symmetry[s];
     return std::string(1, axis_name(plane.axis)) + " = " + format_quantity(plane.position, Dimension::Length) +
-           " (boundaries.symmetry[" + std::to_string(s) + "])";
+           " (" + plane_key(spec, s) + ")";
   };
   for (std::size_t s = 0; s < spec.symmetry.size(); ++s) {
     const SymmetryPlaneSpec& plane = spec.symmetry[s];
     const int a = plane.axis;
     if (a < 0 || a > 2)
-      throw CaseError(spec.source_file, plane.line, "boundaries.symmetry[" + std::to_string(s) + "].axis",
+      throw CaseError(spec.source_file, plane.line, plane_key(spec, s) + ".axis",
                       "must be x, y or z");
     std::size_t first_body = nb;  // the first body wholly on one side decides the side
     std::size_t plus = 0, minus = 0;  // particles on either side, for when every body reaches across
@@ -522,6 +528,11 @@ std::vector<int> clip_to_symmetry(const CaseSpec& spec, std::vector<BodyLattice>
       plus += above;
       minus += below;
       const int this_side = above == pts.size() ? 1 : (below == pts.size() ? -1 : 0);
+      if (plane.wall && this_side == 0 && !pts.empty())
+        throw CaseError(spec.source_file, spec.bodies[k].line, body_key(k),
+                        body_name(spec, k) + " reaches through the wall " + where(s) +
+                            "; a wall is not a plane of symmetry, so every body must lie wholly on one side of it "
+                            "(move the body, or use [[boundaries.symmetry]] for a plane that cuts it)");
       if (this_side == 0 || pts.empty()) continue;
       if (first_body == nb) {
         first_body = k;

@@ -144,6 +144,7 @@ struct Plane {
   int axis;
   double position;  // m
   double side;      // +1 or -1: the side the model lies on
+  bool wall;        // pushes but does not pull (lets_go_of_wall, common/integration.hpp)
 };
 
 // How two bodies interact: shared SPH sums (penalty = 0) or penalty contact (F 4.1-4.6).
@@ -177,6 +178,7 @@ struct Params {
   int body_count;
   int plane_count;
   Plane planes[kMaxPlanes];
+  unsigned wall_planes;  // bit k: plane k is a wall
 };
 
 // Mirror image of a point through the planes of `mask`, taken in plane order as the reference does
@@ -190,6 +192,18 @@ IMPACTSPH_GPU_HD inline bool mirror_image(const Plane* planes, int plane_count, 
     if ((mask & (1 << k)) && !mirror_through_plane(sign, shift, x, planes[k].axis, planes[k].position, margin))
       return false;
   return true;
+}
+
+// The walls (bit k for plane k) that a particle with deviatoric stress S and pressure P lets go of
+// (lets_go_of_wall, common/integration.hpp).
+template <class Real>
+IMPACTSPH_GPU_HD unsigned walls_let_go(const Plane* planes, int plane_count, const Sym3<Real>& S, Real P,
+                                       const Vec3<Real>& v) {
+  unsigned let_go = 0;
+  for (int k = 0; k < plane_count; ++k)
+    if (planes[k].wall && lets_go_of_wall(S, P, v, planes[k].axis, static_cast<Real>(planes[k].side)))
+      let_go |= 1u << k;
+  return let_go;
 }
 
 // Wall time of the phases of a step: CUDA events on the device, the steady clock on the host.
@@ -307,7 +321,8 @@ class Solver final : public GpuStepper {
       const SymmetryPlaneSpec& plane = scene.spec.symmetry[static_cast<std::size_t>(k)];
       double side = 0;  // the model lies on one side of each plane (the scene builder guarantees it)
       for (const Vec3d& x : scene.particles.pos) side += x[plane.axis] - plane.position;
-      params_.planes[k] = Plane{plane.axis, plane.position, side >= 0 ? 1.0 : -1.0};
+      params_.planes[k] = Plane{plane.axis, plane.position, side >= 0 ? 1.0 : -1.0, plane.wall};
+      if (plane.wall) params_.wall_planes |= 1u << k;
     }
     std::vector<MaterialParams<Real>> mats;
     for (const MaterialParams<double>& m : scene.materials) mats.push_back(convert_material<Real>(m));
@@ -701,6 +716,7 @@ class Solver final : public GpuStepper {
     wx_.resize(t); wv_.resize(t); wrho_.resize(t); wp_.resize(t); wc_.resize(t); wm_.resize(t); wh_.resize(t);
     wvol_.resize(t); wA_.resize(t); wS_.resize(t); wmat_.resize(t); wbody_.resize(t); wdamage_.resize(t);
     wlinv_.resize(t); wgrad_rho_.resize(t); wav_.resize(t); wR_.resize(params_.art.on() ? t : 0);
+    wlet_go_.resize(t); wimage_walls_.resize(t);
     sorted_ = true;
     stats_.ghosts = static_cast<std::size_t>(ghosts_);
   }
@@ -714,6 +730,9 @@ class Solver final : public GpuStepper {
     Sym3<Real>* S;  // deviatoric stress after apply_failure
     Sym3<Real>* R;  // artificial stress (null when off)
     std::int32_t *mat, *body;
+    unsigned* let_go;       // walls a real lets go of (bit k for plane k; ghosts 0)
+    unsigned* image_walls;  // walls a ghost is mirrored through (reals 0): a pair takes no part when
+                            // image_walls[j] & let_go[i] (lets_go_of_wall, common/integration.hpp)
     Mat3<Real>* linv;
     Vec3<Real>* grad_rho;
     const std::int64_t* list_offset;  // Verlet list of real i: slots list[list_offset[i] .. list_offset[i+1])
@@ -731,7 +750,8 @@ class Solver final : public GpuStepper {
   };
   Work work() {
     return Work{raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
-                raw(wav_), raw(wA_), raw(wS_), params_.art.on() ? raw(wR_) : nullptr, raw(wmat_), raw(wbody_), raw(wlinv_), raw(wgrad_rho_),
+                raw(wav_), raw(wA_), raw(wS_), params_.art.on() ? raw(wR_) : nullptr, raw(wmat_), raw(wbody_),
+                raw(wlet_go_), raw(wimage_walls_), raw(wlinv_), raw(wgrad_rho_),
                 raw(list_offset_), raw(list_), raw(contacts_), params_.body_count};
   }
 
@@ -755,6 +775,7 @@ class Solver final : public GpuStepper {
     const std::int32_t* order = raw(order_);
     const std::int32_t* slot = raw(slot_of_);
     const std::int32_t* gsrc = raw(ghost_source_);
+    const std::int32_t* gmask = raw(ghost_mask_);
     const Vec3p* gsign = raw(ghost_sign_);
     const Vec3p* gshift = raw(ghost_shift_);
     const Real* mass = raw(mass_);
@@ -780,7 +801,12 @@ class Solver final : public GpuStepper {
       apply_failure(mats[mi], S, P, damage[i]);
       Vec3p xs = y.pos[i];
       Vec3<Real> vs = y.vel[i];
+      Real m = mass[i];
+      const unsigned let_go = walls_let_go(prm.planes, prm.plane_count, S, P, vs);
+      unsigned image_walls = 0;
       if (pnt >= n) {
+        image_walls = static_cast<unsigned>(gmask[pnt - n]) & prm.wall_planes;
+        if (image_walls & let_go) m = 0;  // its source let go of a wall it is mirrored through
         const Vec3p sg = gsign[pnt - n];
         xs = hadamard(sg, xs) + gshift[pnt - n];
         const Vec3<Real> sr = cast3<Real>(sg);
@@ -788,10 +814,12 @@ class Solver final : public GpuStepper {
         S = mirror(S, sr);
       }
       const Real rho = y.rho[i];
-      w.x[s] = xs; w.v[s] = vs; w.rho[s] = rho; w.p[s] = P; w.c[s] = c; w.m[s] = mass[i]; w.h[s] = h[i];
+      w.x[s] = xs; w.v[s] = vs; w.rho[s] = rho; w.p[s] = P; w.c[s] = c; w.m[s] = m; w.h[s] = h[i];
       w.mat[s] = mi; w.body[s] = body[i]; w.damage[s] = pair_damage(mats[mi], damage[i]);
       w.S[s] = S;
-      w.vol[s] = mass[i] / rho;
+      w.let_go[s] = pnt < n ? let_go : 0u;
+      w.image_walls[s] = image_walls;
+      w.vol[s] = m / rho;
       const Real inv_rho2 = Real(1) / (rho * rho);
       w.A[s] = inv_rho2 * Sym3<Real>{S.xx - P, S.yy - P, S.zz - P, S.xy, S.yz, S.zx};
       if (prm.art.on()) w.R[s] = artificial_stress(prm.art, w.A[s]);  // before any viscosity joins A
@@ -812,6 +840,7 @@ class Solver final : public GpuStepper {
       const Real rhoi = w.rho[s], hi = w.h[s], di = w.damage[s];
       const bool face_i = compressive_crack_face(mats, w.mat[s], di);
       const std::int32_t bi = w.body[s];
+      const unsigned let_go_i = w.let_go[s];
       Real sum[kGradientSums] = {};
       std::int32_t count = 0;
       const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
@@ -823,7 +852,8 @@ class Solver final : public GpuStepper {
         const Real r = norm(xij);
         if (r < kernel_support(hij)) {
           ++count;
-          if (!w.pair(bi, w.body[j]).penalty) {  // bodies in penalty contact do not share sums
+          // bodies in penalty contact do not share sums; nor does i with an image behind a wall it let go of
+          if (!w.pair(bi, w.body[j]).penalty && !(w.image_walls[j] & let_go_i)) {
             const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
             GradientSums<Real> one = GradientSums<Real>::zero();
             const bool face = face_i || compressive_crack_face(mats, w.mat[j], w.damage[j]);
@@ -874,6 +904,7 @@ class Solver final : public GpuStepper {
       const Real rhoi = w.rho[s], hi = w.h[s], mi_mass = w.m[s];
       const std::int32_t mi = w.mat[s], bi = w.body[s];
       const MaterialParams<Real>& mat_i = mats[mi];
+      const unsigned let_go_i = w.let_go[s];
       const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi,
                                   compressive_crack_face(mats, mi, w.damage[s]),
                                   prm.art.on() ? w.R[s].full() : Mat3<Real>::zero()};
@@ -885,7 +916,7 @@ class Solver final : public GpuStepper {
         const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
         const Real hij = Real(0.5) * (hi + w.h[j]);
         const Real r = norm(xij);
-        if (r < kernel_support(hij) && !w.pair(bi, w.body[j]).penalty) {
+        if (r < kernel_support(hij) && !w.pair(bi, w.body[j]).penalty && !(w.image_walls[j] & let_go_i)) {
           const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
           const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j],
                                       compressive_crack_face(mats, w.mat[j], w.damage[j]),
@@ -1099,6 +1130,7 @@ class Solver final : public GpuStepper {
   DVec<Real> wrho_, wp_, wc_, wm_, wh_, wvol_, wdamage_, wav_;
   DVec<Sym3<Real>> wA_, wS_, wR_;
   DVec<std::int32_t> wmat_, wbody_;
+  DVec<unsigned> wlet_go_, wimage_walls_;
   DVec<Mat3<Real>> wlinv_;
   // Copies back to the host, in the scene's order.
   DVec<Vec3d> out_vec_[2];

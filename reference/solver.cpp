@@ -41,6 +41,7 @@ ReferenceSolver::ReferenceSolver(const Scene& scene)
     double side = 0;
     for (const Vec3d& x : scene.particles.pos) side += x[plane.axis] - plane.position;
     plane_side_.push_back(side >= 0 ? 1.0 : -1.0);
+    if (plane.wall) wall_planes_ |= 1u << (plane_side_.size() - 1);
   }
   contact_of_pair_.assign(body_count_ * body_count_, nullptr);
   for (const ContactSpec& c : contacts_) {
@@ -73,18 +74,21 @@ double ReferenceSolver::stable_time_step(const ParticleSet& p) {
   return dt;
 }
 
-// Mirror particles for the symmetry planes. Planes are taken in turn and each mirrors the real particles
-// and the ghosts made so far, so the corner of two planes gets its double image.
+// Mirror particles for the symmetry planes and walls. Planes are taken in turn and each mirrors the real
+// particles and the ghosts made so far, so the corner of two planes gets its double image.
 void ReferenceSolver::find_ghosts(const std::vector<Vec3d>& pos, double margin) {
   ghosts_.clear();
   const std::size_t n = pos.size();
-  for (const SymmetryPlaneSpec& plane : symmetry_) {
+  for (std::size_t k_plane = 0; k_plane < symmetry_.size(); ++k_plane) {
+    const SymmetryPlaneSpec& plane = symmetry_[k_plane];
     const std::size_t existing = ghosts_.size();
     for (std::size_t k = 0; k < n + existing; ++k) {
-      Ghost g = k < n ? Ghost{static_cast<std::int32_t>(k), Vec3d{1, 1, 1}, Vec3d{0, 0, 0}} : ghosts_[k - n];
+      Ghost g = k < n ? Ghost{static_cast<std::int32_t>(k), Vec3d{1, 1, 1}, Vec3d{0, 0, 0}, 0u} : ghosts_[k - n];
       if (mirror_through_plane(g.sign, g.shift, pos[static_cast<std::size_t>(g.source)], plane.axis, plane.position,
-                               margin))
+                               margin)) {
+        if (plane.wall) g.walls |= 1u << k_plane;
         ghosts_.push_back(g);
+      }
     }
   }
 }
@@ -98,7 +102,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   x_.resize(total); v_.resize(total); rho_.resize(total); pressure_.resize(total); sound_speed_.resize(total);
   m_.resize(total); hh_.resize(total); mat_.resize(total); s_over_rho2_.resize(total); l_inverse_.resize(total);
   grad_rho_.resize(total); grad_v_.resize(n); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
-  pair_damage_.resize(total);
+  pair_damage_.resize(total); let_go_.resize(n); image_walls_.resize(total);
   std::vector<Sym3d>& stress = stress_;
   stress.resize(total);
 #pragma omp parallel for schedule(static)
@@ -109,13 +113,22 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     pressure_[i] = material_pressure(mat, rho_[i], y.energy[i], bulking_[i], sound_speed_[i]);
     apply_failure(mat, stress[i], pressure_[i], damage_all_[i]);  // failed: no deviator, no tension (JH-2: limit)
     pair_damage_[i] = pair_damage(mat, damage_all_[i]);
+    unsigned let_go = 0;
+    for (std::size_t k = 0; k < symmetry_.size(); ++k)
+      if (((wall_planes_ >> k) & 1u) &&
+          lets_go_of_wall(stress[i], pressure_[i], v_[i], symmetry_[k].axis, plane_side_[k]))
+        let_go |= 1u << k;  // it lets go of wall k: no pairs with images behind it, and no images of its own
+    let_go_[i] = let_go;
+    image_walls_[i] = 0;
   }
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
     const Ghost& g = ghosts_[k];
     const std::size_t s = static_cast<std::size_t>(g.source), i = n + k;
     x_[i] = hadamard(g.sign, y.pos[s]) + g.shift;
     v_[i] = hadamard(g.sign, y.vel[s]);
-    rho_[i] = rho_[s]; m_[i] = m_[s]; hh_[i] = hh_[s]; mat_[i] = mat_[s]; bb_[i] = bb_[s];
+    rho_[i] = rho_[s]; hh_[i] = hh_[s]; mat_[i] = mat_[s]; bb_[i] = bb_[s];
+    m_[i] = (g.walls & let_go_[s]) ? 0.0 : m_[s];  // its source let go of a wall it is mirrored through
+    image_walls_[i] = g.walls;
     damage_all_[i] = damage_all_[s];
     pair_damage_[i] = pair_damage_[s];
     pressure_[i] = pressure_[s]; sound_speed_[i] = sound_speed_[s];
@@ -162,6 +175,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       if (r >= kernel_support(hij)) continue;
       ++pairs;
       if (penalty_between(bi, bb_[j])) continue;  // bodies in penalty contact do not share sums
+      if (image_walls_[j] & let_go_[i]) continue;  // i let go of the wall this image lies behind
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
       add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi, di, pair_damage_[j],
                         face_i || crack_face(static_cast<std::size_t>(j)));
@@ -217,6 +231,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     const double rhoi = rho_[i], hi = hh_[i];
     const std::int32_t mi = mat_[i], bi = bb_[i];
     const PairSide<double> side_i = pair_side(i);
+    const unsigned let_go_i = let_go_[i];
     Vec3d acc{0, 0, 0}, contact{0, 0, 0};
     double de = 0, diffusion = 0, contact_power = 0;
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
@@ -237,7 +252,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       }
       const double hij = 0.5 * (hi + hh_[j]);
       const double r = norm(xij);
-      if (r >= kernel_support(hij)) continue;
+      if (r >= kernel_support(hij) || (image_walls_[j] & let_go_i)) continue;
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
       const double stress_factor = art.on() ? artificial_stress_pair_factor(art, kernel, r, hij) : 0.0;
       add_momentum_energy_pair(side_i, pair_side(j), visc, gw, xij, vi - v_[j], hij, m_[j], stress_factor, acc, de);

@@ -33,11 +33,14 @@ class ReferenceSolver final : public Stepper {
   std::size_t velocity_gradients(const ParticleSet& p, std::vector<Mat3d>& grad_v);
 
  private:
-  // Per-axis affine map x' = sign x + shift taking a real particle to its mirror image.
+  // Per-axis affine map x' = sign x + shift taking a real particle to its mirror image; walls: bit k set
+  // when the image was mirrored through symmetry_[k] and that plane is a wall (lets_go_of_wall,
+  // common/integration.hpp).
   struct Ghost {
     std::int32_t source;
     Vec3d sign;
     Vec3d shift;
+    unsigned walls;
   };
   struct State {
     std::vector<Vec3d> pos, vel;
@@ -90,6 +93,10 @@ class ReferenceSolver final : public Stepper {
   double h_max_ = 0;
 
   std::vector<Ghost> ghosts_;
+  // Walls: per real particle the walls it let go of, per point (reals 0) the walls of its image; bit k for
+  // symmetry_[k]. A pair takes no part when image_walls_[j] & let_go_[i] (lets_go_of_wall).
+  std::vector<unsigned> let_go_, image_walls_;
+  unsigned wall_planes_ = 0;
   NeighbourList neighbours_;  // Verlet list: each row in index order (reals, then ghosts)
   bool list_valid_ = false;
   std::vector<Vec3d> pos_at_build_;  // positions when the list was built

@@ -631,6 +631,23 @@ TEST(CaseFileErrors, Boundaries) {
   expect_error(t, "boundaries.symmetry[1].position", "the same plane as boundaries.symmetry[0]", -1);
   t = kBase + "\n[[boundaries.symmetry]]\naxis = \"x\"\n[[boundaries.symmetry]]\naxis = \"x\"\nposition = \"10 mm\"\n";
   EXPECT_EQ(parse_case_string(t, "case.toml").symmetry.size(), 2u);  // two planes on one axis: a channel
+  // A wall joins the same list of planes, after the symmetry planes, and is named by its own table.
+  t = kBase + "\n[[boundaries.wall]]\naxis = \"z\"\nposition = \"-5 mm\"\n[[boundaries.symmetry]]\naxis = \"x\"\n";
+  {
+    const CaseSpec w = parse_case_string(t, "case.toml");
+    ASSERT_EQ(w.symmetry.size(), 2u);
+    EXPECT_FALSE(w.symmetry[0].wall);
+    EXPECT_EQ(w.symmetry[0].key, "boundaries.symmetry[0]");
+    EXPECT_TRUE(w.symmetry[1].wall);
+    EXPECT_EQ(w.symmetry[1].axis, 2);
+    EXPECT_DOUBLE_EQ(w.symmetry[1].position, -5e-3);
+    EXPECT_EQ(w.symmetry[1].key, "boundaries.wall[0]");
+    EXPECT_EQ(w.symmetry[1].line, line_of(t, "[[boundaries.wall]]"));
+  }
+  t = kBase + "\n[[boundaries.symmetry]]\naxis = \"z\"\n[[boundaries.wall]]\naxis = \"z\"\nposition = 0\n";
+  expect_error(t, "boundaries.wall[0].position", "the same plane as boundaries.symmetry[0]", -1);
+  t = kBase + "\n[[boundaries.wall]]\naxis = \"z\"\nfriction = 0.1\n";
+  expect_error(t, "boundaries.wall[0].friction", "axis", -1);
   t = kBase + "\n[[boundaries.fixed]]\nregion = \"box\"\nbody = \"plat\"\nmin = [0, 0, 0]\nmax = [1, 1, 1]\n";
   expect_error(t, "boundaries.fixed[0].body", "did you mean \"plate\"?", line_of(t, "body = \"plat\""));
   t = kBase + "\n[[boundaries.fixed]]\nregion = \"sphere\"\n";

@@ -514,6 +514,24 @@ TEST(SceneErrors, SymmetryPlanes) {
   EXPECT_TRUE(Contains(e.what(), "from bodies[1] (\"above\")"));
 }
 
+TEST(SceneErrors, ABodyThroughAWall) {
+  // A wall is not a plane of symmetry: a body that reaches through it is an error, not clipped.
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  SymmetryPlaneSpec wall{2, 0.0};
+  wall.wall = true;
+  wall.key = "boundaries.wall[0]";
+  s.symmetry.push_back(wall);
+  s.bodies.push_back(box("block", {0, 0, 0}, {4 * dx, 4 * dx, 4 * dx}));
+  EXPECT_NO_THROW(build_scene(s));
+  s.bodies[0] = box("through", {0, 0, -2 * dx}, {4 * dx, 4 * dx, 2 * dx});
+  s.bodies[0].line = 7;
+  const CaseError e = scene_error(s);
+  EXPECT_EQ(e.key(), "bodies[0]");
+  EXPECT_EQ(e.line(), 7);
+  EXPECT_TRUE(Contains(e.what(), "reaches through the wall z = 0 mm (boundaries.wall[0])"));
+}
+
 TEST(Scene, BodyAcrossAPlaneIsClipped) {
   const double dx = 1e-3;
   CaseSpec s = spec_with_spacing(dx);

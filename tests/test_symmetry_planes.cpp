@@ -80,5 +80,22 @@ TEST(SymmetryPlanes, AParticleThatCrossedIsReflectedWithItsNormalVelocityReverse
   EXPECT_DOUBLE_EQ(u.z, -3.0);
 }
 
+TEST(Walls, AParticleLetsGoWhenInTensionAndLeaving) {
+  // Wall normal to z, the model above it (side +1). sigma_nn = S_nn - P: pressure 100 MPa and S_zz = 50 MPa
+  // press (-50 MPa); S_zz = 150 MPa pulls (+50 MPa). Only a particle that pulls and moves away lets go.
+  const Sym3d presses{0, 0, 50e6, 0, 0, 0}, pulls{-20e6, 0, 150e6, 30e6, 0, 0};
+  const Vec3d leaving{0, 0, 1.0}, arriving{5.0, 0, -1.0}, at_rest{0, 0, 0};
+  EXPECT_TRUE(lets_go_of_wall(pulls, 100e6, leaving, 2, 1.0));
+  EXPECT_FALSE(lets_go_of_wall(pulls, 100e6, arriving, 2, 1.0));
+  EXPECT_FALSE(lets_go_of_wall(pulls, 100e6, at_rest, 2, 1.0));
+  EXPECT_FALSE(lets_go_of_wall(presses, 100e6, leaving, 2, 1.0));
+  // The model below the wall (side -1): leaving is moving along -z.
+  EXPECT_TRUE(lets_go_of_wall(pulls, 100e6, Vec3d{0, 0, -1.0}, 2, -1.0));
+  EXPECT_FALSE(lets_go_of_wall(pulls, 100e6, leaving, 2, -1.0));
+  // The normal stress is the wall's own: S_xx = -20 MPa presses on a wall normal to x; zero still presses.
+  EXPECT_FALSE(lets_go_of_wall(pulls, 100e6, Vec3d{1.0, 0, 0}, 0, 1.0));
+  EXPECT_FALSE(lets_go_of_wall(Sym3d{100e6, 0, 0, 0, 0, 0}, 100e6, Vec3d{1.0, 0, 0}, 0, 1.0));
+}
+
 }  // namespace
 }  // namespace impactsph

@@ -51,5 +51,18 @@ TEST(TaylorBarFace, FollowsARadialSpread) {
   EXPECT_NEAR(o.impact_face_diameter_shifted, 2 * (1.2 * r0 + 0.5 * kD0 - r0), 1e-12);
 }
 
+// A bar that bounced off a wall that does not pull: the gap between the wall and its face is not part of
+// its length, and its face is its own first layer.
+TEST(TaylorBarFace, ABarThatLeftTheWallIsMeasuredFromItsFace) {
+  Scene s = bar_scene();
+  const CaseObservables at_rest = measure_observables(s, s.particles);
+  ParticleSet p = s.particles;
+  for (Vec3d& x : p.pos) x.z += 1.3e-3;
+  const CaseObservables left = measure_observables(s, p);
+  EXPECT_NEAR(left.final_length, at_rest.final_length, 1e-12);
+  EXPECT_NEAR(left.impact_face_diameter_area, at_rest.impact_face_diameter_area, 1e-12);
+  EXPECT_NEAR(left.impact_face_diameter_shifted, at_rest.impact_face_diameter_shifted, 1e-12);
+}
+
 }  // namespace
 }  // namespace impactsph
