@@ -916,6 +916,11 @@ void read_boundaries(const View& root, CaseSpec& spec) {
       spec.symmetry.push_back(plane);
     }
   }
+  // Both solvers keep a plane's images in a bit mask, and the gpu port holds its planes in a fixed array.
+  if (spec.symmetry.size() > 6)
+    root.fail(spec.symmetry.back().key, "too many planes: at most 6, symmetry planes and walls together "
+                                        "(the faces of a box), and this case gives " +
+                                            std::to_string(spec.symmetry.size()));
 }
 
 // Contact pairs: [[contacts]] with bodies = ["a", "b"], kind, penalty_scale, contact_distance.

@@ -644,6 +644,9 @@ TEST(CaseFileErrors, Boundaries) {
     EXPECT_EQ(w.symmetry[1].key, "boundaries.wall[0]");
     EXPECT_EQ(w.symmetry[1].line, line_of(t, "[[boundaries.wall]]"));
   }
+  t = kBase;
+  for (int k = 0; k < 7; ++k) t += "\n[[boundaries.wall]]\naxis = \"x\"\nposition = \"" + std::to_string(k) + " mm\"\n";
+  expect_error(t, "boundaries.wall[6]", "too many planes: at most 6, symmetry planes and walls together", -1);
   t = kBase + "\n[[boundaries.symmetry]]\naxis = \"z\"\n[[boundaries.wall]]\naxis = \"z\"\nposition = 0\n";
   expect_error(t, "boundaries.wall[0].position", "the same plane as boundaries.symmetry[0]", -1);
   t = kBase + "\n[[boundaries.wall]]\naxis = \"z\"\nfriction = 0.1\n";
