@@ -23,6 +23,7 @@
 #include "app/sweep.hpp"
 #include "app/verify.hpp"
 #include "common/case_file.hpp"
+#include "common/checkpoint.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
 #include "common/output.hpp"
@@ -126,13 +127,24 @@ std::unique_ptr<Stepper> make_run_stepper(const Scene& scene, const std::string&
 }
 
 int run_command(CaseArgs args, std::string out, int threads, bool quiet, const std::string& restart_dir,
-                const std::vector<std::string>& argv_all, std::string backend, std::string precision) {
+                const std::vector<std::string>& argv_all, std::string backend, std::string precision,
+                std::string end) {
+  if (!end.empty() && restart_dir.empty())
+    throw std::runtime_error("--end " + end + " continues a run to a later end time and goes with --restart DIR; "
+                             "a new run takes its end from the case file, e.g. --set time.end=\"600 us\"");
+  nlohmann::json run_record;
+  bool end_from_record = false;
   if (!restart_dir.empty()) {
     const fs::path run_json = fs::path(restart_dir) / "run.json";
     std::ifstream in(run_json);
     if (!in) throw std::runtime_error("cannot restart: " + run_json.string() + " is missing (is " + restart_dir +
                                       " the --out folder of an earlier run?)");
     const nlohmann::json j = nlohmann::json::parse(in);
+    run_record = j;
+    if (end.empty()) {
+      end = j.value("end", "");  // a run extended once keeps its later end
+      end_from_record = true;
+    }
     if (args.case_file.empty()) {
       args.case_file = j.at("case_file").get<std::string>();
       args.spacing = j.at("spacing").get<std::string>();
@@ -152,6 +164,22 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   Scene scene = load_scene(args);
   print_geometry_warnings(scene, stderr);
   if (out.empty()) out = (fs::path("runs") / scene.spec.name).string();
+  if (!end.empty()) {
+    // --end: the same run (same fingerprint, same physics) continued past the case's time.end.
+    double t_end = 0;
+    try {
+      t_end = parse_quantity(end, Dimension::Time);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(std::string("--end: ") + e.what());
+    }
+    const double t_now = end_from_record ? 0.0 : read_checkpoint(checkpoint_path(out)).clock.time;
+    if (!(t_end > t_now))
+      throw std::runtime_error("--end " + end + ": the run in " + out + " is already at " +
+                               format_quantity(t_now, Dimension::Time) + "; give a later end time");
+    scene.spec.time.end = t_end;
+    run_record["end"] = end;
+    write_text_atomic(fs::path(out) / "run.json", run_record.dump(2) + "\n");
+  }
   RunOptions opt;
   opt.out_dir = out;
   opt.quiet = quiet;
@@ -250,7 +278,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   CaseArgs run_args, check_args;
-  std::string out, restart_dir, backend, precision;
+  std::string out, restart_dir, backend, precision, run_end;
   int threads = 0;
   bool quiet = false;
   auto add_case_options = [](CLI::App* sub, CaseArgs& a) {
@@ -265,6 +293,8 @@ int main(int argc, char** argv) {
   run->add_option("--threads", threads, "OpenMP threads (default: all cores)")->check(CLI::PositiveNumber);
   run->add_flag("--quiet,-q", quiet, "no banner and no progress line");
   run->add_option("--restart", restart_dir, "continue the run whose output folder is DIR from its last checkpoint");
+  run->add_option("--end", run_end, "with --restart: continue the run to this later end time (e.g. 600us); "
+                                    "later restarts keep it");
   run->add_option("--backend", backend, "solver: reference (default) or gpu (the CUDA port; its host build without a GPU)")
       ->check(CLI::IsMember({"reference", "gpu"}));
   run->add_option("--precision", precision, "double (default) or float (gpu backend only)")
@@ -332,7 +362,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   }
   try {
-    if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all, backend, precision);
+    if (*run) return run_command(run_args, out, threads, quiet, restart_dir, argv_all, backend, precision, run_end);
     if (*sweep) return sweep_command(sweep_opt);
     if (*verify) {
       verify_opt.command_line = argv_all;
