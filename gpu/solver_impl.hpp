@@ -921,7 +921,7 @@ class Solver final : public GpuStepper {
           const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j],
                                       compressive_crack_face(mats, w.mat[j], w.damage[j]),
                                       prm.art.on() ? w.R[j].full() : Mat3<Real>::zero()};
-          const Real stress_factor = prm.art.on() ? artificial_stress_pair_factor(prm.art, K, r, hij) : Real(0);
+          const Real stress_factor = artificial_stress_pair_factor(prm.art, K, r, hij);
           Vec3<Real> acc{0, 0, 0};
           Real de = 0;
           add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], stress_factor, acc, de);

@@ -254,7 +254,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       const double r = norm(xij);
       if (r >= kernel_support(hij) || (image_walls_[j] & let_go_i)) continue;
       const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      const double stress_factor = art.on() ? artificial_stress_pair_factor(art, kernel, r, hij) : 0.0;
+      const double stress_factor = artificial_stress_pair_factor(art, kernel, r, hij);
       add_momentum_energy_pair(side_i, pair_side(j), visc, gw, xij, vi - v_[j], hij, m_[j], stress_factor, acc, de);
       if (mat_[j] == mi)
         diffusion += damaged_delta_sph_term(side_i.damage, pair_damage_[j], volume_[j], rhoi, rho_[j], xij, gri,

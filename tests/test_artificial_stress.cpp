@@ -121,6 +121,8 @@ TYPED_TEST(ArtificialStressTyped, PairFactorIsOneAtTheSpacing) {
     EXPECT_EQ(artificial_stress_pair_factor(p, k, Real(2.01) * h, h), Real(0));
     const Real f1 = make_artificial_stress<Real>(Real(0.3), 1, k, h_factor, false).inverse_w_spacing * kernel_w(k, Real(1.5) * dp / h, Real(1));
     EXPECT_NEAR(artificial_stress_pair_factor(p, k, Real(1.5) * dp, h), f1 * f1 * f1 * f1, Real(1e-6));
+    const ArtificialStressParams<Real> off = make_artificial_stress<Real>(Real(0), 4, k, h_factor, false);
+    EXPECT_EQ(artificial_stress_pair_factor(off, k, Real(0.8) * dp, h), Real(0));  // off: no pair term
   }
 }
 
