@@ -167,6 +167,9 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   if (!end.empty()) {
     // --end: the same run (same fingerprint, same physics) continued past the case's time.end.
     double t_end = 0;
+    if (end.find_first_not_of("0123456789.eE+- \t") == std::string::npos)
+      throw std::runtime_error("--end " + end + ": give the time with its unit, e.g. --end 600us (a bare number "
+                               "would be seconds)");
     try {
       t_end = parse_quantity(end, Dimension::Time);
     } catch (const std::invalid_argument& e) {
