@@ -39,8 +39,8 @@ std::string run_fingerprint(const std::string& case_file, const std::string& spa
     h ^= 0xff;
     h *= 1099511628211ull;
   };
-  mix(read_text_file(case_file));
-  for (const std::string& f : case_material_files(case_file)) mix(read_text_file(f));
+  mix(toml_file_content(case_file));  // comments and layout do not count, values do
+  for (const std::string& f : case_material_files(case_file)) mix(toml_file_content(f));
   mix(spacing);
   for (const std::string& s : sets) mix(s);
   char buf[32];

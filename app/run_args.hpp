@@ -14,9 +14,9 @@ std::string read_text_file(const std::string& path);  // "" when it cannot be re
 // The JSON in `file`, or null when it is missing or not JSON (a run folder written by another version).
 nlohmann::json read_json_or_null(const std::filesystem::path& file);
 
-// FNV-1a 64 of the case file's text, the texts of the material files it reads (case_material_files), the
-// spacing and every override, as 16 hex digits: a restart must see the same inputs, and a finished run
-// with the same fingerprint need not run again.
+// FNV-1a 64 of what the case file says, of what the material files it reads say (toml_file_content:
+// values, not comments or layout), the spacing and every override, as 16 hex digits: a restart must see
+// the same inputs, and a finished run with the same fingerprint need not run again.
 std::string run_fingerprint(const std::string& case_file, const std::string& spacing,
                             const std::vector<std::string>& sets);
 

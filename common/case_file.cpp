@@ -1354,6 +1354,21 @@ std::vector<std::string> case_material_files(const std::string& path) {
   return files;
 }
 
+std::string toml_file_content(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "";
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    const toml::table tree = toml::parse(text.str(), path);
+    std::ostringstream out;
+    out << toml::toml_formatter(tree);  // keys in order, no comments: the same tree prints the same text
+    return out.str();
+  } catch (const toml::parse_error&) {
+    return text.str();
+  }
+}
+
 CaseSpec load_case_file(const std::string& path, const std::vector<std::string>& set_overrides,
                         const std::string& spacing_override) {
   std::error_code ec;

@@ -37,4 +37,9 @@ CaseSpec parse_case_string(const std::string& toml_text, const std::string& disp
 // fingerprints of runs, which must change when a material file does.
 std::vector<std::string> case_material_files(const std::string& path);
 
+// What the TOML file at `path` says, without its comments, blank lines and layout: the parsed tree written
+// out with its keys in order, so that editing a comment does not change it and editing a value does. The
+// file's raw text when it is not valid TOML; empty when it cannot be read. For the fingerprints of runs.
+std::string toml_file_content(const std::string& path);
+
 }  // namespace impactsph

@@ -1220,3 +1220,23 @@ TEST(CaseFileLoad, ListsTheMaterialFilesItReads) {
   }));
   EXPECT_TRUE(impactsph::case_material_files(cases + "/no-such-case.toml").empty());
 }
+
+// A run's fingerprint reads a file's values, not its comments: rewording a comment in a material file
+// must not make every run of it stale, and changing a value must.
+TEST(CaseFileLoad, FileContentIgnoresCommentsAndLayoutButNotValues) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "impactsph_toml_content";
+  std::filesystem::create_directories(dir);
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const std::string a = write("a.toml", "# steel\ndensity = \"7850 kg/m^3\"\n[eos]\nkind = \"linear\"\n");
+  const std::string b = write("b.toml", "density   = \"7850 kg/m^3\"  # F Table 2\n\n# the EOS\n[eos]\nkind = \"linear\"\n");
+  const std::string c = write("c.toml", "density = \"7851 kg/m^3\"\n[eos]\nkind = \"linear\"\n");
+  const std::string bad = write("bad.toml", "density = \n");
+  EXPECT_EQ(impactsph::toml_file_content(a), impactsph::toml_file_content(b));
+  EXPECT_NE(impactsph::toml_file_content(a), impactsph::toml_file_content(c));
+  EXPECT_EQ(impactsph::toml_file_content(bad), "density = \n");  // not TOML: its text, so it still counts
+  EXPECT_EQ(impactsph::toml_file_content((dir / "missing.toml").string()), "");
+  std::filesystem::remove_all(dir);
+}
