@@ -32,7 +32,8 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p);
 
 // Tracks whether the residual velocity has settled (state kept in RunClock so a restart continues it):
 // the velocity must first leave its initial value by more than the tolerance (the impact has begun),
-// then stay within the tolerance for the settle window.
+// then stay within the tolerance for the settle window, and a projectile still moving must not be drifting
+// fast enough to stop within ten windows (near the ballistic limit that is a stop in progress).
 void track_settling(const ObservablesSpec& spec, double time, double residual_velocity, RunClock& clock);
 
 // Whether a run whose residual velocity has settled has nothing more to show (stop_when_settled): the

@@ -176,5 +176,26 @@ TEST(PlugDetection, SettlesAfterTheVelocityLeftItsStartAndHeldForTheWindow) {
   EXPECT_LT(c.settled_time, 0);
 }
 
+// Near the ballistic limit a projectile can slow slowly enough to stay within the tolerance for a whole
+// window while it is still coming to a stop in the hole: that is not a steady residual velocity. The same
+// drift at a speed that it would take more than ten windows to lose is steady.
+TEST(PlugDetection, AProjectileSlowingToAStopHasNotSettled) {
+  Scene s = plate_scene();
+  const ObservablesSpec& spec = s.spec.observables;  // window 30 us, tolerance 1 m/s
+  const double us = 1e-6;
+  auto settles = [&](double v_at_window_start) {
+    RunClock c;
+    track_settling(spec, 0, 150.0, c);
+    for (int k = 0; k <= 32; ++k) track_settling(spec, (10 + k) * us, v_at_window_start - 0.025 * k, c);
+    return c.settled_time >= 0;  // 0.8 m/s lost over 32 us: within the tolerance
+  };
+  EXPECT_FALSE(settles(4.0));   // 3.2 m/s left, 7.5 m/s lost in ten windows at that rate: stopping
+  EXPECT_TRUE(settles(40.0));   // 39.2 m/s left: steady
+  RunClock stopped;
+  track_settling(spec, 0, 150.0, stopped);
+  for (int k = 0; k <= 32; ++k) track_settling(spec, (10 + k) * us, 0.9 - 0.025 * k, stopped);
+  EXPECT_GE(stopped.settled_time, 0);  // within the tolerance of zero: stopped, whatever the drift
+}
+
 }  // namespace
 }  // namespace impactsph
