@@ -388,7 +388,7 @@ void hugoniot(Report& r, const std::string& cases, double speed) {
   }
 }
 
-// Experiment (shared/data/validation.md): Taylor bar final length 16.21 mm, impact-face diameter 13.56 mm.
+// Experiment (Johnson and Cook 1983, as reported by Zerilli and Armstrong 1987): Taylor bar final length 16.21 mm, impact-face diameter 13.56 mm.
 constexpr double kTaylorLength = 16.21e-3, kTaylorDiameter = 13.56e-3;
 // 8 mm plate at 298 m/s: the experiments' Recht-Ipson curve, p = 2, a = m_p/(m_p + m_plug) = 0.909,
 // v_bl = 152.5 m/s (cases/plate-8mm/README.md): 232.7 m/s.
@@ -1269,7 +1269,7 @@ int verify_command(const VerifyOptions& opt) {
     md << "## Validation observables against spacing\n\n"
        << "Taylor bar: experiment final length " << mm(kTaylorLength) << " mm, impact-face diameter "
        << mm(kTaylorDiameter)
-       << " mm (shared/data/validation.md). 8 mm plate at 298 m/s: the experiments' "
+       << " mm (Johnson and Cook 1983, as reported by Zerilli and Armstrong 1987). 8 mm plate at 298 m/s: the experiments' "
           "Recht-Ipson curve (p = 2, a = 0.909, v_bl = 152.5 m/s) gives "
        << fmt("%.1f", recht_ipson(kPlateCurve, kPlateSpeed))
        << " m/s (cases/plate-8mm/README.md). Ceramic tile "

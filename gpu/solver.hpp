@@ -33,8 +33,6 @@ class GpuStepper : public Stepper {
   // that before reading the particles, so the host only launches and copies back for output).
   virtual void defer_host_copies(bool defer) = 0;
   void copy_to_host(ParticleSet& p) override = 0;
-  // Forget the device state: the next call reads the ParticleSet again (after it was changed outside).
-  virtual void reload() = 0;
   // How many times the particles were sorted by cell (and their neighbour lists rebuilt).
   virtual long sorts() const = 0;
   // Per-phase timing (sort, time_step, gather, pass1, pass2, advance, check, finish); off by default, since

@@ -353,7 +353,6 @@ class Solver final : public GpuStepper {
   std::string name() const override { return name_; }
   StepStats last_stats() const override { return stats_; }
   void defer_host_copies(bool defer) override { defer_ = defer; }
-  void reload() override { resident_ = false; }
   long sorts() const override { return sorts_; }
   void profile_phases(bool on) override { clock_.on = on; }
   std::vector<PhaseTime> phase_times() const override {

@@ -5,7 +5,7 @@
 // - Grueneisen with cubic Us-up (X eqs 30-31): exact on its own Hugoniot (algebra below); derivatives in
 //   compression and tension; continuity at mu = 0.
 // - Polynomial and Linear; sound speed at rest and its floor.
-// Reference data: /work/shared/data/validation.md (Steinberg's constants; Hugoniot table).
+// Reference data: Steinberg's LLNL equation-of-state compilation (constants; Hugoniot table).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // Elastic wave (issue 2): a uniaxial-strain pulse in a bar of Weldox-like steel, cases/elastic-wave.
-// Closed forms (shared/data/validation.md): c_L = sqrt((K + 4G/3)/rho) = 6144 m/s and, behind the front,
+// Closed forms of linear elasticity: c_L = sqrt((K + 4G/3)/rho) = 6144 m/s and, behind the front,
 // the stress rho c_L v with v = 10 m/s the particle velocity (half the 20 m/s impact speed).
 // Targets: wave speed within 1 % and stress amplitude within 3 % at the CI spacing (1 mm), the error
 // of the velocity profile smaller at 0.5 mm, total energy drift below 0.5 %, momentum to round-off.

@@ -1,5 +1,5 @@
 // Hugoniot (issue 2): symmetric plate impact of 4340 steel, hydrodynamic, cases/hugoniot-4340.
-// Rankine-Hugoniot with Us = c0 + s up, up = V/2 (shared/data/validation.md): shock pressure rho0 Us up
+// Rankine-Hugoniot with Us = c0 + s up, up = V/2 (the jump conditions; 4340 constants of Steinberg's LLNL equation-of-state compilation): shock pressure rho0 Us up
 // and shock speed Us within 3 %. The shocked material is at rest in the laboratory, so the front in the
 // target runs at Us - up; its half-pressure point is fitted over time.
 #include <gtest/gtest.h>

@@ -24,7 +24,7 @@ struct RunCost {
 };
 
 // cases/elastic-wave: a 20 mm flyer at 20 m/s strikes an 80 mm bar of the same elastic steel under
-// uniaxial strain. Closed forms (shared/data/validation.md, "Elastic waves"): c_L = sqrt((K + 4G/3)/rho),
+// uniaxial strain. Closed forms of linear elasticity: c_L = sqrt((K + 4G/3)/rho),
 // particle velocity v = 10 m/s behind the front, stress rho c_L v.
 struct ElasticWaveExact {
   static constexpr double rho = 7850, youngs = 200e9, poisson = 0.33;  // kg/m^3, Pa, -

@@ -1,5 +1,5 @@
 // Taylor bar (issue 3, CTest label `validation`: minutes): OFHC copper at 190 m/s on a rigid wall,
-// cases/taylor-bar. Experiment (shared/data/validation.md): final length 16.21 mm (target within 3 %),
+// cases/taylor-bar. Experiment (Johnson and Cook 1983, as reported by Zerilli and Armstrong 1987): final length 16.21 mm (target within 3 %),
 // impact-face diameter 13.56 mm (within 5 %). Runs three spacings, prints both figures at each and
 // asserts the targets at the finest.
 #include <gtest/gtest.h>
