@@ -28,36 +28,23 @@ fi
 
 python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" ${EXTRA_RUNS:-} <<'PY'
 import glob, json, math, os, subprocess, sys
+sys.path.insert(0, 'cases/plate-8mm')
+from plate_runs import read_run, recht_ipson, summary_path
 
 runs, out, commit, extra = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
 V_BL_EXPERIMENT = 152.5  # m/s, F section 7: the experiments' ballistic limit of the 8 mm plate
 P_EXPERIMENT = 2.0       # Recht-Ipson exponent of a blunt projectile pushing out a plug (validation data)
-
-def summary_path(p):
-    return p if p.endswith('.json') else os.path.join(p, 'summary.json')
 
 paths = sorted(glob.glob(os.path.join(runs, '*', 'summary.json'))) + [summary_path(p) for p in extra]
 rows = []
 for path in paths:
     if not os.path.isfile(path):
         sys.exit('residual-curve: %s is missing (run the sweep, or drop it from EXTRA_RUNS)' % path)
-    s = json.load(open(path))
-    if 'observables' not in s:
+    r = read_run(path)
+    if r is None:
         print('residual-curve: %s has no observables; left out' % path)
         continue
-    bodies = {b['name']: b for b in s['bodies']}
-    proj = bodies['projectile']
-    p0 = s['totals']['initial_momentum_kg_m_s']
-    v0 = math.sqrt(sum(c * c for c in p0)) / proj['initial_mass_kg']  # only the projectile moves at t = 0
-    o = s['observables']
-    rows.append(dict(v0=v0, vr=o['residual_velocity'], perforated=o['perforated'],
-                     plug=o.get('plug_mass', 0.0) * 1e3, plug_v=o.get('plug_velocity', 0.0),
-                     mp=proj['specified']['mass_kg'], spacing=s['spacing_m'] * 1e3,
-                     damage=o.get('damage_fraction', 0.0), settled=o.get('settled_time'),
-                     completed=bool(s.get('completed')), t_end=s['simulated_time_s'],
-                     drift=s['totals']['energy_drift_relative'], wall=s['wall_time_s'],
-                     threads=s['hardware']['threads'], steps=s['steps'], particles=s['particles'],
-                     neighbours=s['mean_neighbours'], source=os.path.dirname(path)))
+    rows.append(r)
 if not rows:
     sys.exit('residual-curve: no finished runs in %s' % runs)
 rows.sort(key=lambda r: r['v0'])
@@ -70,9 +57,6 @@ if len(spacings) != 1:
 mp = rows[0]['mp']
 full_plug = 7850.0 * math.pi * 0.010 ** 2 * 0.008 * 1e3  # g, a 20 mm disc through the 8 mm plate
 a_exp = mp * 1e3 / (mp * 1e3 + full_plug)
-
-def recht_ipson(a, p, v_bl, v):
-    return a * (v ** p - v_bl ** p) ** (1.0 / p) if v > v_bl else 0.0
 
 def fit(points, v_bl=None):
     """Least squares of a (v^p - v_bl^p)^(1/p): a in closed form for each (p, v_bl), p and v_bl by a
