@@ -939,20 +939,32 @@ int ballistic_limit_command(const BallisticOptions& opt) {
   const Run& high = s.runs[1];
   const double end_us = s.spec.time.end * 1e6;
   if (low.obs.perforated || !high.obs.perforated) {
+    // A run that had not settled by time.end may still change its verdict (near the limit a projectile
+    // can be slowing to a stop in the hole at time.end): continuing it keeps every other run of the search.
+    auto continue_hint = [&](const Run& r) {
+      if (r.obs.settled_time >= 0) return std::string();
+      char buf[640];
+      std::snprintf(buf, sizeof buf,
+                    " It had not settled by time.end = %.4g us, so its verdict may still change: continue it with "
+                    "`impactsph run --restart %s --end %.4gus` and run this command again (it takes the longer run "
+                    "from its folder).",
+                    end_us, report_path(r.dir).c_str(), 1.5 * end_us);
+      return std::string(buf);
+    };
     if (low.obs.perforated)
       std::fprintf(stderr,
                    "error: the low end is wrong: --from %s m/s already perforates '%s' (projectile residual velocity "
-                   "%.1f m/s, plug %.1f m/s), so the ballistic limit is below it. Try a lower --from, e.g. --from %s.\n",
+                   "%.1f m/s, plug %.1f m/s), so the ballistic limit is below it. Try a lower --from, e.g. --from "
+                   "%s.%s\n",
                    speed_text(low.v).c_str(), os.target.c_str(), low.obs.residual_velocity, low.obs.plug_velocity,
-                   speed_text(0.5 * low.v).c_str());
+                   speed_text(0.5 * low.v).c_str(), continue_hint(low).c_str());
     if (!high.obs.perforated)
       std::fprintf(stderr,
                    "error: the high end is wrong: --to %s m/s does not perforate '%s' by time.end = %.4g us "
-                   "(projectile residual velocity %.1f m/s%s), so the limit is above it, or the plug had not left "
-                   "yet. Try a higher --to, e.g. --to %s%s.\n",
+                   "(projectile residual velocity %.1f m/s), so the limit is above it, or the plug had not left "
+                   "yet. Try a higher --to, e.g. --to %s.%s\n",
                    speed_text(high.v).c_str(), os.target.c_str(), end_us, high.obs.residual_velocity,
-                   high.obs.settled_time < 0 ? ", not settled" : "", speed_text(2 * high.v).c_str(),
-                   high.obs.settled_time < 0 ? ", or a longer time.end (--set time.end=...)" : "");
+                   speed_text(2 * high.v).c_str(), continue_hint(high).c_str());
     std::fprintf(stderr, "Both runs are in %s.\n", s.out.string().c_str());
     return finish_failed("bad-bracket", 4);
   }

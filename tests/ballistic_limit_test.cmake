@@ -68,3 +68,15 @@ file(GLOB leftovers ${OUT}/*.tmp-* ${OUT}/v_*/*.tmp-*)
 if(leftovers)
   message(FATAL_ERROR "temporary files left behind: ${leftovers}")
 endif()
+
+# A wrong end that had not settled by time.end: the message says so and how to continue that run (the
+# high end, 60 m/s, is still slowing in the plate at 20 us).
+file(REMOVE_RECURSE ${OUT}-wrong-end)
+execute_process(COMMAND ${EXE} ballistic-limit ${CASE} --from 50 --to 60 --tolerance 5 --jobs 2
+                        --spacing 2.5mm --set time.end=20us --set output.vtu=false --out ${OUT}-wrong-end
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 4 OR NOT err MATCHES "error: the high end is wrong: --to 60 m/s does not perforate 'plate'"
+   OR NOT err MATCHES "It had not settled by time.end = 20 us, so its verdict may still change: continue it with `impactsph run --restart [^`]*v_60 --end 30us`")
+  message(FATAL_ERROR "expected the wrong-end message with the continue hint (exit 4), got ${rc}:\n${out}\n${err}")
+endif()
+file(REMOVE_RECURSE ${OUT}-wrong-end)
