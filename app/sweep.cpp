@@ -754,7 +754,9 @@ int sweep_command(const SweepOptions& opt) {
   std::size_t next = 0;
   int failed = 0, interrupted = 0, finished = 0;
   bool told_stop = false, killed = false;
-  while (next < todo.size() || !running.empty()) {
+  // Once told to stop, no new run starts: the loop ends when the runs in flight have stopped, with runs
+  // still to do left for the next call.
+  while ((next < todo.size() && !told_stop) || !running.empty()) {
     const int sig = g_signals.load();
     if (sig >= 1 && !told_stop) {
       told_stop = true;
