@@ -7,4 +7,4 @@ set grid
 set xrange [100:312.9]
 set samples 500
 ri(a,p,vb,x) = x > vb ? a*(x**p - vb**p)**(1.0/p) : 0
-plot ri(0.909091,2,152.5,x) lw 2 lc rgb "black" title "experiments: Recht-Ipson, p = 2, v_{bl} = 152.5 m/s", ri(0.964326,1.7937,149.42,x) dt 3 lw 2 lc rgb "dark-green" title "fit, all free: a = 0.964, p = 1.79, v_{bl} = 149.4 m/s", "residual_curve.dat" using 1:($3 > 0 ? $2 : 1/0) with points pt 7 ps 1.5 lc rgb "red" title "simulated, 1 mm, perforated", "residual_curve.dat" using 1:($3 > 0 ? 1/0 : $2) with points pt 6 ps 1.5 lc rgb "red" title "simulated, held (rebound)"
+plot ri(0.909091,2,152.5,x) lw 2 lc rgb "black" title "experiments: Recht-Ipson, p = 2, v_{bl} = 152.5 m/s", ri(0.940934,1.87098,152.5,x) dt 2 lw 2 lc rgb "blue" title "fit: a = 0.941, p = 1.87, v_{bl} = 152.5 m/s", ri(0.877563,2.22891,154.133,x) dt 3 lw 2 lc rgb "dark-green" title "fit, all free: a = 0.878, p = 2.23, v_{bl} = 154.1 m/s", "residual_curve.dat" using 1:($3 > 0 ? $2 : 1/0) with points pt 7 ps 1.5 lc rgb "red" title "simulated, 1 mm, perforated", "residual_curve.dat" using 1:($3 > 0 ? 1/0 : $2) with points pt 6 ps 1.5 lc rgb "red" title "simulated, held (rebound)"
