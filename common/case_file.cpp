@@ -997,6 +997,7 @@ const Keys kPictureFields{"plastic_strain", "damage", "speed", "pressure"};
 void read_numerics(const View& root, NumericsSpec& num) {
   const View n = root.sub("numerics", "[numerics]", "[numerics] with spacing = \"0.5 mm\"");
   n.allow({"spacing", "kernel", "h_factor", "viscosity_linear", "viscosity_quadratic", "viscosity_balsara",
+           "viscosity_limiter", "viscosity_limiter_close_approach",
            "bulk_viscosity_linear", "bulk_viscosity_quadratic", "artificial_stress", "artificial_stress_exponent", "artificial_stress_of",
            "delta",
            "cfl", "correction_max_condition"});
@@ -1012,6 +1013,12 @@ void read_numerics(const View& root, NumericsSpec& num) {
   num.viscosity.quadratic = n.number_or("viscosity_quadratic", 1.0);
   n.non_negative("viscosity_quadratic", num.viscosity.quadratic, Dimension::Dimensionless);
   num.viscosity_balsara = n.boolean_or("viscosity_balsara", false);
+  const bool limited = n.choice("viscosity_limiter", {"none", "van-leer"}, "none") == "van-leer";
+  const double close = n.number_or("viscosity_limiter_close_approach", kViscosityCloseApproachSpacings);
+  n.range("viscosity_limiter_close_approach", close, 0, 1, Dimension::Dimensionless);
+  if (!limited && n.has("viscosity_limiter_close_approach"))
+    n.fail("viscosity_limiter_close_approach", "only acts with viscosity_limiter = \"van-leer\"; set that, or remove this key");
+  num.viscosity = limited_viscosity_params(num.viscosity.linear, num.viscosity.quadratic, limited, num.h_factor, close);
   num.bulk_viscosity.linear = n.number_or("bulk_viscosity_linear", 0.0);
   n.range("bulk_viscosity_linear", num.bulk_viscosity.linear, 0, 5, Dimension::Dimensionless);
   num.bulk_viscosity.quadratic = n.number_or("bulk_viscosity_quadratic", 0.0);

@@ -2,6 +2,8 @@
 // Q2; `quadratic` is F's kappa2 and X's Q1 (the papers swap the names, see physics-notes).
 // Pi_ij has the units of P/rho^2 (m^5 kg^-1 s^-2), like the stress terms of the momentum equation.
 #pragma once
+#include <cmath>
+
 #include "common/tensor.hpp"
 
 namespace impactsph {
@@ -10,7 +12,62 @@ template <class Real>
 struct ViscosityParams {
   Real linear = Real(1);
   Real quadratic = Real(1);
+  // Limited midpoint reconstruction of the pair's velocity jump (limited_midpoint_jump); off: the raw v_ij.
+  bool limited = false;
+  // Close-approach radius and fold of the limiter, as fractions of the pair smoothing length h_ij: the
+  // reconstruction fades out when two particles come closer than about one spacing (close_eta = 1 / h_factor).
+  Real close_eta = Real(1) / Real(1.2);
+  Real close_fold = Real(0.2) / Real(1.2);
 };
+
+// Spacings at which the limiter lets the full jump back, and over how many it folds in (the defaults of the
+// limited Monaghan-Gingold viscosity of LLNL's Spheral, etaCritFrac = 1 and etaFoldFrac = 0.2).
+constexpr double kViscosityCloseApproachSpacings = 1.0;
+constexpr double kViscosityCloseFoldSpacings = 0.2;
+// close_spacings: the close-approach radius in spacings (0: the reconstruction never fades).
+template <class Real>
+ViscosityParams<Real> limited_viscosity_params(Real linear, Real quadratic, bool limited, Real h_factor,
+                                               Real close_spacings = Real(kViscosityCloseApproachSpacings)) {
+  ViscosityParams<Real> p;
+  p.linear = linear;
+  p.quadratic = quadratic;
+  p.limited = limited;
+  p.close_eta = close_spacings / h_factor;
+  p.close_fold = Real(kViscosityCloseFoldSpacings) / h_factor;
+  return p;
+}
+
+// Van Leer's limiter of the ratio r of two slopes, symmetric in r and 1/r: 4 r / (1 + r)^2, 1 where the
+// slopes agree, 0 where they have opposite signs (r <= 0).
+template <class Real>
+IMPACTSPH_HD Real van_leer_limiter(Real r) {
+  if (!(r > Real(0))) return Real(0);
+  return Real(4) * r / ((Real(1) + r) * (Real(1) + r));
+}
+
+// The pair's velocity jump reconstructed to its midpoint (m/s), as finite-volume schemes take the jump their
+// dissipation acts on (Frontiere, Raskin and Owen 2017, J. Comput. Phys. 332, 160, CRKSPH's limited
+// viscosity; Rosswog 2020, MAGMA2): each side's velocity is carried half-way to the other by its own gradient,
+//   v_ij* = v_ij - phi/2 (grad v_i + grad v_j) x_ij,
+// phi the van Leer limiter of the two slopes x_ij . grad v . x_ij. A linear velocity field (uniform strain,
+// shear and rotation, isochoric plastic flow) has no jump left, so a Monaghan term on it leaves smooth flow
+// alone; a shock or a particle sliding past its neighbours (the non-affine share the gradient does not
+// register) keeps its jump. When the two come closer than close_eta h the reconstruction fades out with
+// exp(-((r/h - close_eta)/close_fold)^2), so that a pair being crushed meets the full viscosity.
+// grad_v is dv_a/dx_b (1/s); x_ij = x_i - x_j (m); h the pair smoothing length (m).
+template <class Real>
+IMPACTSPH_HD Vec3<Real> limited_midpoint_jump(const ViscosityParams<Real>& p, Vec3<Real> xij, Vec3<Real> vij,
+                                              const Mat3<Real>& grad_v_i, const Mat3<Real>& grad_v_j, Real h) {
+  const Vec3<Real> di = grad_v_i * xij, dj = grad_v_j * xij;
+  const Real si = dot(di, xij), sj = dot(dj, xij);
+  Real phi = si * sj > Real(0) ? van_leer_limiter(si / sj) : Real(0);
+  const Real eta = norm(xij) / h;
+  if (eta < p.close_eta) {
+    const Real f = (eta - p.close_eta) / p.close_fold;
+    phi *= std::exp(-f * f);
+  }
+  return vij - (Real(0.5) * phi) * (di + dj);
+}
 
 // xij = x_i - x_j, vij = v_i - v_j, h the pair smoothing length, c and rho the pair means.
 template <class Real>

@@ -303,8 +303,11 @@ class Solver final : public GpuStepper {
     if (scene.spec.symmetry.size() > static_cast<std::size_t>(kMaxPlanes))
       throw std::runtime_error("the gpu port handles at most 6 symmetry planes");
     params_.kernel = numerics_.kernel;
-    params_.visc = ViscosityParams<Real>{static_cast<Real>(numerics_.viscosity.linear),
-                                         static_cast<Real>(numerics_.viscosity.quadratic)};
+    params_.visc.linear = static_cast<Real>(numerics_.viscosity.linear);
+    params_.visc.quadratic = static_cast<Real>(numerics_.viscosity.quadratic);
+    params_.visc.limited = numerics_.viscosity.limited;
+    params_.visc.close_eta = static_cast<Real>(numerics_.viscosity.close_eta);
+    params_.visc.close_fold = static_cast<Real>(numerics_.viscosity.close_fold);
     params_.correction.max_condition = static_cast<Real>(numerics_.correction.max_condition);
     params_.delta = static_cast<Real>(numerics_.delta);
     params_.cfl = static_cast<Real>(numerics_.cfl);
@@ -715,6 +718,7 @@ class Solver final : public GpuStepper {
     wx_.resize(t); wv_.resize(t); wrho_.resize(t); wp_.resize(t); wc_.resize(t); wm_.resize(t); wh_.resize(t);
     wvol_.resize(t); wA_.resize(t); wS_.resize(t); wmat_.resize(t); wbody_.resize(t); wdamage_.resize(t);
     wlinv_.resize(t); wgrad_rho_.resize(t); wav_.resize(t); wR_.resize(params_.art.on() ? t : 0);
+    wgv_.resize(params_.visc.limited ? t : 0);
     wlet_go_.resize(t); wimage_walls_.resize(t);
     sorted_ = true;
     stats_.ghosts = static_cast<std::size_t>(ghosts_);
@@ -733,6 +737,7 @@ class Solver final : public GpuStepper {
     unsigned* image_walls;  // walls a ghost is mirrored through (reals 0): a pair takes no part when
                             // image_walls[j] & let_go[i] (lets_go_of_wall, common/integration.hpp)
     Mat3<Real>* linv;
+    Mat3<Real>* grad_v;  // velocity gradient by slot, ghosts mirrored (null unless the viscosity is limited)
     Vec3<Real>* grad_rho;
     const std::int64_t* list_offset;  // Verlet list of real i: slots list[list_offset[i] .. list_offset[i+1])
     const std::int32_t* list;
@@ -750,7 +755,8 @@ class Solver final : public GpuStepper {
   Work work() {
     return Work{raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
                 raw(wav_), raw(wA_), raw(wS_), params_.art.on() ? raw(wR_) : nullptr, raw(wmat_), raw(wbody_),
-                raw(wlet_go_), raw(wimage_walls_), raw(wlinv_), raw(wgrad_rho_),
+                raw(wlet_go_), raw(wimage_walls_), raw(wlinv_), params_.visc.limited ? raw(wgv_) : nullptr,
+                raw(wgrad_rho_),
                 raw(list_offset_), raw(list_), raw(contacts_), params_.body_count};
   }
 
@@ -865,6 +871,7 @@ class Solver final : public GpuStepper {
       w.linv[s] = cg.l_inverse;
       w.grad_rho[s] = cg.grad_rho;
       grad_v[i] = cg.grad_v;
+      if (prm.visc.limited) w.grad_v[s] = cg.grad_v;
       fell[i] = cg.fell_back ? 1 : 0;
       ncount[i] = count;
       w.av[s] = prm.balsara ? balsara_factor(cg.grad_v, w.c[s], hi) : Real(1);
@@ -878,6 +885,7 @@ class Solver final : public GpuStepper {
       w.grad_rho[s] = hadamard(sg, w.grad_rho[src]);
       w.av[s] = w.av[src];
       if (prm.bulk_on) w.A[s] = mirror(w.A[src], sg);
+      if (prm.visc.limited) w.grad_v[s] = mirror(w.grad_v[src], sg);
     });
     stats_.correction_fallbacks =
         static_cast<std::size_t>(thrust::reduce(fallback_.begin(), fallback_.begin() + n, std::int64_t(0)));
@@ -906,7 +914,8 @@ class Solver final : public GpuStepper {
       const unsigned let_go_i = w.let_go[s];
       const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi,
                                   compressive_crack_face(mats, mi, w.damage[s]),
-                                  prm.art.on() ? w.R[s].full() : Mat3<Real>::zero()};
+                                  prm.art.on() ? w.R[s].full() : Mat3<Real>::zero(),
+                                  prm.visc.limited ? w.grad_v[s] : Mat3<Real>::zero()};
       const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
       Real sum[5] = {};  // acceleration x, y, z; energy rate; delta-SPH diffusion
       IMPACTSPH_SIMD_SUMS(sum[:5])
@@ -919,7 +928,8 @@ class Solver final : public GpuStepper {
           const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
           const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j],
                                       compressive_crack_face(mats, w.mat[j], w.damage[j]),
-                                      prm.art.on() ? w.R[j].full() : Mat3<Real>::zero()};
+                                      prm.art.on() ? w.R[j].full() : Mat3<Real>::zero(),
+                                      prm.visc.limited ? w.grad_v[j] : Mat3<Real>::zero()};
           const Real stress_factor = artificial_stress_pair_factor(prm.art, K, r, hij);
           Vec3<Real> acc{0, 0, 0};
           Real de = 0;
@@ -1130,7 +1140,7 @@ class Solver final : public GpuStepper {
   DVec<Sym3<Real>> wA_, wS_, wR_;
   DVec<std::int32_t> wmat_, wbody_;
   DVec<unsigned> wlet_go_, wimage_walls_;
-  DVec<Mat3<Real>> wlinv_;
+  DVec<Mat3<Real>> wlinv_, wgv_;
   // Copies back to the host, in the scene's order.
   DVec<Vec3d> out_vec_[2];
   DVec<Sym3d> out_sym_;

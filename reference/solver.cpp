@@ -101,7 +101,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   // Fill the work arrays: real particles, then ghosts from their sources.
   x_.resize(total); v_.resize(total); rho_.resize(total); pressure_.resize(total); sound_speed_.resize(total);
   m_.resize(total); hh_.resize(total); mat_.resize(total); s_over_rho2_.resize(total); l_inverse_.resize(total);
-  grad_rho_.resize(total); grad_v_.resize(n); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
+  grad_rho_.resize(total); grad_v_.resize(total); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
   pair_damage_.resize(total); let_go_.resize(n); image_walls_.resize(total);
   std::vector<Sym3d>& stress = stress_;
   stress.resize(total);
@@ -209,6 +209,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     grad_rho_[n + k] = hadamard(g.sign, grad_rho_[s]);
     av_factor_[n + k] = av_factor_[s];
     if (bulk_on) s_over_rho2_[n + k] = mirror(s_over_rho2_[s], g.sign);
+    if (numerics_.viscosity.limited) grad_v_[n + k] = mirror(grad_v_[s], g.sign);
   }
 
   // Constitutive rate: Jaumann deviatoric stress rate of the body's strength model (F 3.5-3.7).
@@ -280,7 +281,8 @@ bool ReferenceSolver::crack_face(std::size_t i) const {
 
 PairSide<double> ReferenceSolver::pair_side(std::size_t i) const {
   return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i], crack_face(i),
-          artificial_stress_.empty() ? Mat3d::zero() : artificial_stress_[i].full()};
+          artificial_stress_.empty() ? Mat3d::zero() : artificial_stress_[i].full(),
+          numerics_.viscosity.limited ? grad_v_[i] : Mat3d::zero()};
 }
 
 void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {
@@ -389,7 +391,7 @@ std::size_t ReferenceSolver::velocity_gradients(const ParticleSet& p, std::vecto
   list_valid_ = false;
   Rates f;
   evaluate(y, f, 0.0);
-  grad_v = grad_v_;
+  grad_v.assign(grad_v_.begin(), grad_v_.begin() + static_cast<std::ptrdiff_t>(p.pos.size()));
   return stats_.correction_fallbacks;
 }
 

@@ -108,7 +108,7 @@ class ReferenceSolver final : public Stepper {
   std::vector<Sym3d> s_over_rho2_;  // (S - P I) / rho^2 stored as a symmetric tensor
   std::vector<Sym3d> artificial_stress_;  // R of common/artificial_stress.hpp, units of s_over_rho2_ (empty: off)
   std::vector<Mat3d> l_inverse_;
-  std::vector<Mat3d> grad_v_;       // real particles only
+  std::vector<Mat3d> grad_v_;       // reals; ghosts mirror theirs only for the limited viscosity
   std::vector<double> damage_, plastic_strain_, temperature_, bulking_;  // history variables at the step start
   std::vector<std::int32_t> bb_;    // body of reals and ghosts
   std::vector<double> damage_all_;  // damage of reals and ghosts

@@ -198,6 +198,7 @@ axis = "y"
                               "spacing = \"0.5 mm\"\nkernel = \"cubic-spline\"\nh_factor = 1.5\ncfl = 0.3\n"
                               "viscosity_linear = 0.5\nviscosity_quadratic = 2\ndelta = 0\ncorrection_max_condition = 50\n"
                               "bulk_viscosity_linear = 0.5\nbulk_viscosity_quadratic = 1\n"
+                              "viscosity_limiter = \"van-leer\"\nviscosity_limiter_close_approach = 0.5\n"
                               "artificial_stress = 0.3\nartificial_stress_exponent = 6\nartificial_stress_of = \"total\"",
                               with("output_interval = \"1 us\"",
                                    "output_interval = \"1 us\"\nframe_interval = \"0.5 us\"\ncheckpoint_interval = \"10 us\"",
@@ -206,6 +207,10 @@ axis = "y"
   EXPECT_DOUBLE_EQ(s.numerics.bulk_viscosity.linear, 0.5);
   EXPECT_DOUBLE_EQ(s.numerics.bulk_viscosity.quadratic, 1);
   EXPECT_DOUBLE_EQ(parse_case_string(toml, "case.toml").numerics.bulk_viscosity.linear, 0);  // off by default
+  EXPECT_TRUE(s.numerics.viscosity.limited);
+  EXPECT_DOUBLE_EQ(s.numerics.viscosity.close_eta, 0.5 / 1.5);  // spacings over h_factor
+  EXPECT_DOUBLE_EQ(s.numerics.viscosity.close_fold, 0.2 / 1.5);
+  EXPECT_FALSE(parse_case_string(toml, "case.toml").numerics.viscosity.limited);  // off by default
   EXPECT_DOUBLE_EQ(s.numerics.artificial_stress, 0.3);
   EXPECT_EQ(s.numerics.artificial_stress_exponent, 6);
   EXPECT_FALSE(s.numerics.artificial_stress_deviatoric);
@@ -597,6 +602,9 @@ TEST(CaseFileErrors, NumericsOutOfRange) {
       {"delta = -0.1", "numerics.delta", "at least 0"},
       {"viscosity_linear = -1", "numerics.viscosity_linear", "must not be negative"},
       {"viscosity_quadratic = -1", "numerics.viscosity_quadratic", "must not be negative"},
+      {"viscosity_limiter = \"minmod\"", "numerics.viscosity_limiter", "\"none\", \"van-leer\""},
+      {"viscosity_limiter_close_approach = 0.5", "numerics.viscosity_limiter_close_approach", "viscosity_limiter = \"van-leer\""},
+      {"viscosity_limiter_close_approach = 2\nviscosity_limiter = \"van-leer\"", "numerics.viscosity_limiter_close_approach", "at most 1"},
       {"bulk_viscosity_linear = -0.5", "numerics.bulk_viscosity_linear", "at least 0"},
       {"bulk_viscosity_quadratic = 6", "numerics.bulk_viscosity_quadratic", "at most 5"},
       {"artificial_stress = 1.5", "numerics.artificial_stress", "at most 1"},

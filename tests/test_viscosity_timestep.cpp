@@ -285,3 +285,78 @@ TEST(BalsaraFactor, CompressionRotationAndShear) {
 }
 
 }  // namespace
+
+// ---- Limited midpoint reconstruction of the viscosity's jump (viscosity.hpp, limited_midpoint_jump) ----
+namespace {
+
+using impactsph::Mat3;
+using impactsph::Vec3;
+using impactsph::ViscosityParams;
+
+ViscosityParams<double> limited(double h_factor = 1.2) {
+  return impactsph::limited_viscosity_params(1.0, 1.0, true, h_factor);
+}
+
+TEST(VanLeerLimiter, OneWhereSlopesAgreeZeroWhereTheyDisagree) {
+  EXPECT_EQ(impactsph::van_leer_limiter(1.0), 1.0);
+  EXPECT_EQ(impactsph::van_leer_limiter(0.0), 0.0);
+  EXPECT_EQ(impactsph::van_leer_limiter(-2.0), 0.0);
+  EXPECT_NEAR(impactsph::van_leer_limiter(3.0), 0.75, 1e-15);  // 4 * 3 / 16
+  EXPECT_NEAR(impactsph::van_leer_limiter(1.0 / 3.0), 0.75, 1e-15);
+}
+
+// In a linear velocity field v = G x (uniform compression, shear, rotation: what plastic flow looks like
+// over one kernel), both sides carry G, and the jump reconstructed to the midpoint is zero: the Monaghan
+// term then leaves the flow alone, while on the raw jump it resists it.
+TEST(LimitedMidpointJump, VanishesInALinearVelocityField) {
+  const double h = 1.2e-3;
+  const Mat3<double> G{{{-2e4, 3e4, 1e3}, {5e3, 1.5e4, -2e3}, {0, 4e3, 5e3}}};  // 1/s, compressive along x
+  const ViscosityParams<double> p = limited();
+  // pairs at one spacing (1 mm) or farther, where the close-approach fold does not act
+  for (const Vec3<double> xij : {Vec3<double>{1e-3, 0, 0}, Vec3<double>{0.9e-3, 0.6e-3, 0},
+                                 Vec3<double>{-0.5e-3, 0.4e-3, 0.8e-3}}) {
+    const Vec3<double> vij = G * xij;
+    const Vec3<double> jump = impactsph::limited_midpoint_jump(p, xij, vij, G, G, h);
+    EXPECT_LT(impactsph::norm(jump), 1e-12 * impactsph::norm(vij));
+    EXPECT_EQ(impactsph::monaghan_viscosity(p, xij, jump, h, 4000.0, 8900.0), 0.0);
+  }
+  // the raw jump of the first pair closes, and the unlimited term resists the flow
+  EXPECT_GT(impactsph::monaghan_viscosity(p, Vec3<double>{1e-3, 0, 0}, G * Vec3<double>{1e-3, 0, 0}, h, 4000.0, 8900.0),
+            0.0);
+}
+
+// What the gradient does not register keeps its jump: a pair closing with no gradient on either side (a
+// particle sliding past its neighbours), and slopes of opposite signs (an extremum between the two: a
+// shock front) give the raw jump back.
+TEST(LimitedMidpointJump, KeepsTheNonAffineJumpAndShocks) {
+  const double h = 1.2e-3;
+  const ViscosityParams<double> p = limited();
+  const Vec3<double> xij{1e-3, 0, 0}, vij{-50, 10, 0};
+  const Vec3<double> still = impactsph::limited_midpoint_jump(p, xij, vij, Mat3<double>::zero(), Mat3<double>::zero(), h);
+  EXPECT_EQ(still.x, vij.x);
+  EXPECT_EQ(still.y, vij.y);
+  const Mat3<double> squeeze{{{-1e5, 0, 0}, {0, 0, 0}, {0, 0, 0}}}, stretch{{{1e5, 0, 0}, {0, 0, 0}, {0, 0, 0}}};
+  const Vec3<double> shock = impactsph::limited_midpoint_jump(p, xij, vij, squeeze, stretch, h);
+  EXPECT_EQ(shock.x, vij.x);
+  // slopes of one sign but 3:1 apart: phi = 0.75 of the mean slope is taken off
+  const Mat3<double> third{{{-1e5 / 3, 0, 0}, {0, 0, 0}, {0, 0, 0}}};
+  const Vec3<double> partial = impactsph::limited_midpoint_jump(p, xij, vij, squeeze, third, h);
+  EXPECT_NEAR(partial.x, -50 - 0.5 * 0.75 * (-100 - 100.0 / 3), 1e-12);
+}
+
+// Closer than one spacing (h / h_factor) the reconstruction folds out over 0.2 spacings: a pair being
+// crushed meets the full viscosity.
+TEST(LimitedMidpointJump, FadesOutAtCloseApproach) {
+  const double h = 1.2e-3, dx = 1e-3;
+  const ViscosityParams<double> p = limited(1.2);
+  const Mat3<double> G{{{-1e5, 0, 0}, {0, 0, 0}, {0, 0, 0}}};
+  auto jump_at = [&](double r) {
+    const Vec3<double> xij{r, 0, 0};
+    return impactsph::limited_midpoint_jump(p, xij, G * xij, G, G, h).x / (G * xij).x;  // share of the raw jump
+  };
+  EXPECT_NEAR(jump_at(1.0 * dx), 0.0, 1e-12);
+  EXPECT_NEAR(jump_at(0.8 * dx), 1 - std::exp(-1.0), 1e-12);
+  EXPECT_NEAR(jump_at(0.5 * dx), 1 - std::exp(-6.25), 1e-12);
+}
+
+}  // namespace

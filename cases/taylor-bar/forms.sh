@@ -26,11 +26,13 @@ BULK="--set numerics.bulk_viscosity_linear=0.5 --set numerics.bulk_viscosity_qua
 FORMS="monaghan|
 bulk|--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0 $BULK
 bulk-balsara|--set numerics.viscosity_balsara=true $BULK
+limited|--set numerics.viscosity_limiter=van-leer
+limited-2|--set numerics.viscosity_limiter=van-leer --set numerics.viscosity_linear=2 --set numerics.viscosity_quadratic=2
 monaghan-as|--set numerics.artificial_stress=0.3
 bulk-as|--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0 $BULK --set numerics.artificial_stress=0.3"
 if [[ -n "${FORM_NAMES:-}" ]]; then
   FORMS=$(while IFS='|' read -r form sets; do
-            [[ " $FORM_NAMES " == *" $form "* ]] && echo "$form|$sets"
+            if [[ " $FORM_NAMES " == *" $form "* ]]; then echo "$form|$sets"; fi
           done <<< "$FORMS")
 fi
 
