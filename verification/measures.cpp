@@ -89,13 +89,14 @@ ElasticWaveMeasure measure_elastic_wave(const std::string& case_file, const std:
 }
 
 HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed,
-                                 const AtEnd& at_end) {
+                                 const AtEnd& at_end, const std::vector<std::string>& sets) {
   using X = HugoniotExact;
   const double up = impact_speed / 2, p_rh = X::pressure(impact_speed);
   char speed[64];
   std::snprintf(speed, sizeof speed, "%.10g m/s", up);
-  Scene scene = build_scene(load_case_file(
-      case_file, {std::string("flyer.velocity=") + speed, std::string("target.velocity=") + speed}, spacing));
+  std::vector<std::string> all_sets = {std::string("flyer.velocity=") + speed, std::string("target.velocity=") + speed};
+  all_sets.insert(all_sets.end(), sets.begin(), sets.end());
+  Scene scene = build_scene(load_case_file(case_file, all_sets, spacing));
   const double dx = scene.spec.numerics.spacing;
   const auto t_start = std::chrono::steady_clock::now();
   reference::ReferenceSolver solver(scene);

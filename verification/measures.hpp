@@ -86,8 +86,9 @@ struct HugoniotMeasure {
 // Called with the scene at the end of a run and the time reached (s): a caller's look at the final state.
 using AtEnd = std::function<void(const Scene& scene, double time)>;
 
+// `sets` are further case-file overrides (e.g. another dissipation form).
 HugoniotMeasure measure_hugoniot(const std::string& case_file, const std::string& spacing, double impact_speed,
-                                 const AtEnd& at_end = {});
+                                 const AtEnd& at_end = {}, const std::vector<std::string>& sets = {});
 
 // The solver of a run, made for its scene.
 using MakeStepper = std::function<std::unique_ptr<Stepper>(const Scene& scene)>;
