@@ -32,23 +32,28 @@ EXE=$BUILD_DIR/impactsph
 REPORT=${REPORT:-$DEFAULT_REPORT}
 mkdir -p "$RUNS"
 
-# name | --set overrides of the case (which is Monaghan 1.0 / 1.0)
+# name | --set overrides of the case. Every form names its viscosity and smoothing length, so that the table
+# does not depend on the case's default (the limited viscosity with h = 2 dx since issue 19).
 BULK="--set numerics.bulk_viscosity_linear=0.5 --set numerics.bulk_viscosity_quadratic=1"
-FORMS="monaghan|
-bulk|--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0 $BULK
-bulk-balsara|--set numerics.viscosity_balsara=true $BULK
-limited|--set numerics.viscosity_limiter=van-leer
-limited-2|--set numerics.viscosity_limiter=van-leer --set numerics.viscosity_linear=2 --set numerics.viscosity_quadratic=2
-limited-4|--set numerics.viscosity_limiter=van-leer --set numerics.viscosity_linear=4 --set numerics.viscosity_quadratic=4
-limited-bulk|--set numerics.viscosity_limiter=van-leer $BULK
-limited-2-no-fold|--set numerics.viscosity_limiter=van-leer --set numerics.viscosity_limiter_close_approach=0 --set numerics.viscosity_linear=2 --set numerics.viscosity_quadratic=2
-limited-no-fold|--set numerics.viscosity_limiter=van-leer --set numerics.viscosity_limiter_close_approach=0
-limited-h16|--set numerics.viscosity_limiter=van-leer --set numerics.h_factor=1.6
-limited-h20|--set numerics.viscosity_limiter=van-leer --set numerics.h_factor=2.0
-bulk-h16|--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0 $BULK --set numerics.h_factor=1.6
-bulk-h20|--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0 $BULK --set numerics.h_factor=2.0
-monaghan-as|--set numerics.artificial_stress=0.3
-bulk-as|--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0 $BULK --set numerics.artificial_stress=0.3"
+PLAIN="--set numerics.viscosity_limiter=none"
+LIM="--set numerics.viscosity_limiter=van-leer"
+NO_MONAGHAN="--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0"
+H12="--set numerics.h_factor=1.2"
+FORMS="monaghan|$PLAIN $H12
+bulk|$PLAIN $NO_MONAGHAN $BULK $H12
+bulk-balsara|$PLAIN --set numerics.viscosity_balsara=true $BULK $H12
+limited|$LIM $H12
+limited-2|$LIM --set numerics.viscosity_linear=2 --set numerics.viscosity_quadratic=2 $H12
+limited-4|$LIM --set numerics.viscosity_linear=4 --set numerics.viscosity_quadratic=4 $H12
+limited-bulk|$LIM $BULK $H12
+limited-2-no-fold|$LIM --set numerics.viscosity_limiter_close_approach=0 --set numerics.viscosity_linear=2 --set numerics.viscosity_quadratic=2 $H12
+limited-no-fold|$LIM --set numerics.viscosity_limiter_close_approach=0 $H12
+limited-h16|$LIM --set numerics.h_factor=1.6
+limited-h20|$LIM --set numerics.h_factor=2.0
+bulk-h16|$PLAIN $NO_MONAGHAN $BULK --set numerics.h_factor=1.6
+bulk-h20|$PLAIN $NO_MONAGHAN $BULK --set numerics.h_factor=2.0
+monaghan-as|$PLAIN --set numerics.artificial_stress=0.3 $H12
+bulk-as|$PLAIN $NO_MONAGHAN $BULK --set numerics.artificial_stress=0.3 $H12"
 if [[ -n "${FORM_NAMES:-}" ]]; then
   FORMS=$(while IFS='|' read -r form sets; do
             if [[ " $FORM_NAMES " == *" $form "* ]]; then echo "$form|$sets"; fi
@@ -94,11 +99,14 @@ lines = ["# Taylor bar: dissipation forms", "",
          "Heat share: the internal energy that is not plastic work, against the impact energy (summary.json's",
          "energy_partition; issue 19 asks below 10 %). Face: 2 (outermost radius of the wall layer + half a",
          "cross-section spacing); shifted and area: the two face measures without the lattice's bias",
-         "(docs/case-files.md, [observables]).", "",
+         "(docs/case-files.md, [observables]). Foot xi: the median non-affine share of the neighbours' relative",
+         "velocity over the particles within 1 mm of the face at 10 / 20 us, while the foot flows (issue 19's target",
+         "below 0.1); rim: the bottom layer's outer ring, plastic strain over hoop log-strain ln(r/r0) at the end (a",
+         "continuum has at least 1; target within 10 %). Both by cases/taylor-bar/foot.py from the run's frames.", "",
          f"Forms (each `impactsph run {case} --spacing DX` with these overrides):", ""]
-lines += [f"- {form}: `{sets.strip() or '(the case: Monaghan 1.0 / 1.0)'}`" for form, sets in forms]
-lines += ["", "| form | spacing mm | length mm (gap) | face mm (gap) | face shifted / area mm | heat share | steps | wall s | threads | energy drift |",
-          "|---|---|---|---|---|---|---|---|---|---|"]
+lines += [f"- {form}: `{sets.strip()}`" for form, sets in forms]
+lines += ["", "| form | spacing mm | length mm (gap) | face mm (gap) | face shifted / area mm | heat share | foot xi 10 / 20 us | rim | steps | wall s | threads | energy drift |",
+          "|---|---|---|---|---|---|---|---|---|---|---|---|"]
 for form, sets in forms:
     for dx in os.environ['SPACINGS'].split():
         d = os.path.join(runs, f"{form}-{dx}")
@@ -107,7 +115,7 @@ for form, sets in forms:
             log = d + '.log'
             err = [l.strip() for l in open(log)] if os.path.exists(log) else []
             err = [l for l in err if l.startswith('error:')]
-            lines.append(f"| {form} | {dx} | " + (f"failed: {err[0][7:]}" if err else "not run") + " | | | | | | | |")
+            lines.append(f"| {form} | {dx} | " + (f"failed: {err[0][7:]}" if err else "not run") + " | | | | | | | | | |")
             continue
         j = json.load(open(p))
         o = j['observables']
@@ -120,8 +128,19 @@ for form, sets in forms:
             heat = f"{m.group(1)} %" if m else "?"
         other = (f"{o['impact_face_diameter_shifted']*1e3:.2f} / {o['impact_face_diameter_area']*1e3:.2f}"
                  if 'impact_face_diameter_area' in o else "(run predates them)")
+        foot, rim = "no frames", "no frames"
+        if os.path.exists(os.path.join(d, 'particles.pvd')):
+            cache = os.path.join(d, 'foot.json')
+            if not os.path.exists(cache) or os.path.getmtime(cache) < os.path.getmtime(p):
+                got = subprocess.run([sys.executable, 'cases/taylor-bar/foot.py', d, '--json'], capture_output=True,
+                                     text=True, check=True).stdout
+                open(cache, 'w').write(got)
+            m = json.load(open(cache))
+            xi = {round(r['time_us']): r['foot_xi'] for r in m['frames']}
+            foot = " / ".join(f"{xi[t]:.2f}" if t in xi else "-" for t in (10, 20))
+            rim = f"{m['rim']['consistency']:.2f}"
         lines.append(f"| {form} | {dx} | {L:.2f} ({100*(L/length_x-1):+.1f} %) | "
-                     f"{F:.2f} ({100*(F/face_x-1):+.1f} %) | {other} | {heat} | {j['steps']} | {j['wall_time_s']:.0f} | "
+                     f"{F:.2f} ({100*(F/face_x-1):+.1f} %) | {other} | {heat} | {foot} | {rim} | {j['steps']} | {j['wall_time_s']:.0f} | "
                      f"{j['hardware']['threads']} | {100*j['totals']['energy_drift_relative']:.3f} % |")
 lines += ["", "Runs are kept between invocations (a run made by an earlier commit stays; delete its folder to run it",
           "again). Wall times are of runs that may have shared the machine; compare them only within one form.", ""]
