@@ -1,34 +1,123 @@
-// Taylor bar (issue 3, CTest label `validation`: minutes): OFHC copper at 190 m/s on a rigid wall,
-// cases/taylor-bar. Experiment (Johnson and Cook 1983, as reported by Zerilli and Armstrong 1987): final length 16.21 mm (target within 3 %),
-// impact-face diameter 13.56 mm (within 5 %). Runs three spacings, prints both figures at each and
-// asserts the targets at the finest.
+// Taylor bars (issues 3 and 19, CTest label `validation`: about an hour), each at 0.5, 0.4 and 0.3 mm with the
+// case's own numerics. Targets of issue 19:
+// - cases/taylor-bar, OFHC copper at 190 m/s. Experiment (Johnson and Cook 1983, as reported by Zerilli and
+//   Armstrong 1987): final length 16.21 mm within 3 %, impact-face diameter 13.56 mm within 5 % (the
+//   shifted measure, free of the lattice's bias), at 0.4 and 0.3 mm and converging (the change from 0.4
+//   to 0.3 mm smaller than from 0.5 to 0.4 mm); the heat share (internal energy gained that is not plastic
+//   work, against the impact energy) below 10 %.
+// - cases/taylor-bar-bilinear, the rate-independent benchmark: final length 21.55 mm within 2 % and foot
+//   radius 7.1 mm within 3 % (the finite-element range 21.4-21.7 mm and 7.0-7.2 mm,
+//   cases/taylor-bar-bilinear/reference.md) at all three spacings and converging, peak plastic strain at
+//   least 2.5, and the rim consistency within 10 %: for the outer ring of the bottom lattice layer, the
+//   plastic strain against the hoop log-strain ln(r/r0), which a continuum keeps at 1 or above
+//   (cases/taylor-bar/foot.py, which also gives the non-affinity xi that this test does not assert).
+// Both: energy drift below 0.5 %. Every figure is printed before it is asserted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "common/case_observables.hpp"
+#include "common/observables.hpp"
 #include "verification/harness.hpp"
 
 namespace impactsph::verification {
 namespace {
 
-TEST(TaylorBar, FinalShapeAgainstExperiment) {
-  constexpr double kLength = 16.21e-3, kDiameter = 13.56e-3;
-  CaseObservables finest;
-  for (const char* spacing : {"0.5 mm", "0.4 mm", "0.3 mm"}) {
-    Scene scene = load_case("taylor-bar", spacing);
-    reference::ReferenceSolver solver(scene);
-    const long steps = run_reference(scene, solver, scene.spec.time.end);
-    finest = measure_observables(scene, scene.particles);
-    std::printf("Taylor bar at %s: %zu particles, %ld steps: final length %.3f mm (%+.1f %%), impact-face diameter "
-                "%.3f mm (%+.1f %%)\n",
-                spacing, scene.particles.size(), steps, finest.final_length * 1e3,
-                100 * (finest.final_length / kLength - 1), finest.impact_face_diameter * 1e3,
-                100 * (finest.impact_face_diameter / kDiameter - 1));
+struct BarRun {
+  CaseObservables o;
+  double heat_share = 0;    // (internal energy gained - plastic work) / initial kinetic energy
+  double energy_drift = 0;  // (E_end - E_0) / E_0
+  double peak_plastic_strain = 0;
+  double rim_consistency = 0;  // sum eps_p / sum ln(r/r0) over the bottom layer's outer ring
+};
+
+BarRun run_bar(const std::string& name, const std::string& spacing) {
+  Scene scene = load_case(name, spacing);
+  const ParticleSet& p = scene.particles;
+  const double dx = scene.spec.numerics.spacing;
+  // The rim: particles of the bottom layer (z < dx, the face on the plane z = 0) whose radius is within
+  // dx of the outermost one's, with their initial radius.
+  std::vector<std::size_t> rim;
+  std::vector<double> r0;
+  double r_out = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.pos[i][2] < dx) r_out = std::max(r_out, std::hypot(p.pos[i][0], p.pos[i][1]));
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double r = std::hypot(p.pos[i][0], p.pos[i][1]);
+    if (p.pos[i][2] < dx && r > r_out - dx) {
+      rim.push_back(i);
+      r0.push_back(r);
+    }
   }
-  EXPECT_NEAR(finest.final_length / kLength, 1.0, 0.03);
-  EXPECT_NEAR(finest.impact_face_diameter / kDiameter, 1.0, 0.05);
+  const Totals t0 = summarise_totals(p);
+  reference::ReferenceSolver solver(scene);
+  const long steps = run_reference(scene, solver, scene.spec.time.end);
+  const Totals t1 = summarise_totals(p);
+  BarRun b;
+  b.o = measure_observables(scene, p);
+  b.heat_share = ((t1.internal_energy - t0.internal_energy) - (t1.plastic_work - t0.plastic_work)) /
+                 t0.kinetic_energy;
+  b.energy_drift = (t1.total_energy() - t0.total_energy()) / t0.total_energy();
+  for (std::size_t i = 0; i < p.size(); ++i) b.peak_plastic_strain = std::max(b.peak_plastic_strain, p.plastic_strain[i]);
+  double eps = 0, hoop = 0;
+  for (std::size_t k = 0; k < rim.size(); ++k) {
+    eps += p.plastic_strain[rim[k]];
+    hoop += std::log(std::hypot(p.pos[rim[k]][0], p.pos[rim[k]][1]) / r0[k]);
+  }
+  b.rim_consistency = hoop > 0 ? eps / hoop : 0;
+  std::printf("%s at %s: %zu particles, %ld steps: length %.3f mm, face %.3f mm (lattice) / %.3f mm (shifted) / "
+              "%.3f mm (area), heat share %.1f %%, energy drift %.3f %%, peak plastic strain %.2f, rim consistency "
+              "%.3f (%zu particles)\n",
+              name.c_str(), spacing.c_str(), p.size(), steps, b.o.final_length * 1e3, b.o.impact_face_diameter * 1e3,
+              b.o.impact_face_diameter_shifted * 1e3, b.o.impact_face_diameter_area * 1e3, 100 * b.heat_share,
+              100 * b.energy_drift, b.peak_plastic_strain, b.rim_consistency, rim.size());
+  return b;
+}
+
+const std::vector<std::string> kSpacings = {"0.5 mm", "0.4 mm", "0.3 mm"};
+
+// The change from the middle spacing to the finest is smaller than from the coarsest to the middle one.
+void expect_converging(const char* what, double coarse, double middle, double fine) {
+  std::printf("%s: %.3f / %.3f / %.3f mm, changes %.3f then %.3f mm\n", what, coarse * 1e3, middle * 1e3, fine * 1e3,
+              (middle - coarse) * 1e3, (fine - middle) * 1e3);
+  EXPECT_LT(std::abs(fine - middle), std::abs(middle - coarse)) << what << " is not converging";
+}
+
+TEST(TaylorBar, CopperAgainstExperiment) {
+  constexpr double kLength = 16.21e-3, kDiameter = 13.56e-3;
+  std::vector<BarRun> runs;
+  for (const std::string& s : kSpacings) runs.push_back(run_bar("taylor-bar", s));
+  for (std::size_t k = 1; k < runs.size(); ++k) {
+    const BarRun& b = runs[k];
+    EXPECT_NEAR(b.o.final_length / kLength, 1.0, 0.03) << "final length at " << kSpacings[k];
+    EXPECT_NEAR(b.o.impact_face_diameter_shifted / kDiameter, 1.0, 0.05) << "face diameter at " << kSpacings[k];
+    EXPECT_LT(b.heat_share, 0.10) << "heat share at " << kSpacings[k];
+    EXPECT_LT(std::abs(b.energy_drift), 0.005) << "energy drift at " << kSpacings[k];
+  }
+  expect_converging("copper final length", runs[0].o.final_length, runs[1].o.final_length, runs[2].o.final_length);
+  expect_converging("copper face diameter (shifted)", runs[0].o.impact_face_diameter_shifted,
+                    runs[1].o.impact_face_diameter_shifted, runs[2].o.impact_face_diameter_shifted);
+}
+
+TEST(TaylorBar, BilinearAgainstFiniteElement) {
+  constexpr double kLength = 21.55e-3, kFootRadius = 7.1e-3;
+  std::vector<BarRun> runs;
+  for (const std::string& s : kSpacings) runs.push_back(run_bar("taylor-bar-bilinear", s));
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const BarRun& b = runs[k];
+    EXPECT_NEAR(b.o.final_length / kLength, 1.0, 0.02) << "final length at " << kSpacings[k];
+    EXPECT_NEAR(0.5 * b.o.impact_face_diameter_shifted / kFootRadius, 1.0, 0.03) << "foot radius at " << kSpacings[k];
+    EXPECT_GE(b.peak_plastic_strain, 2.5) << "peak plastic strain at " << kSpacings[k];
+    EXPECT_GE(b.rim_consistency, 0.9) << "rim consistency at " << kSpacings[k];
+    EXPECT_LT(std::abs(b.energy_drift), 0.005) << "energy drift at " << kSpacings[k];
+  }
+  expect_converging("bilinear final length", runs[0].o.final_length, runs[1].o.final_length, runs[2].o.final_length);
+  expect_converging("bilinear foot diameter (shifted)", runs[0].o.impact_face_diameter_shifted,
+                    runs[1].o.impact_face_diameter_shifted, runs[2].o.impact_face_diameter_shifted);
 }
 
 }  // namespace
