@@ -8,7 +8,8 @@ Frames are the VTU files of the run's particles.pvd (run without output.vtu=fals
 order in every frame (the writer's order is the scene's), so frame 0 gives each particle's initial place.
 The bar's axis is z, its impact face the plane z = 0 (the Taylor cases' quarter models, the wall a
 symmetry plane or a [[boundaries.wall]] at z = 0); the mirror images across the case's symmetry planes
-take part in the sums with their velocity mirrored, as the solver's ghosts do.
+and walls take part in the sums with their velocity mirrored, as the solver's ghosts do (for a wall, as
+if every particle near it were still held by it).
 
 Non-affinity (per frame). For particle i with neighbours j in the kernel support 2 h_ij, h_ij = (h_i + h_j)/2,
 the corrected velocity gradient G_i = [sum_j V_j v_ji (x) grad_i W_ij] L_i^-1, L_i = sum_j V_j x_ji (x)
@@ -172,7 +173,8 @@ def measure(run):
             kernel_name = s.split('=', 1)[1].strip('"')
     kernel = wendland_c2 if kernel_name == 'wendland-c2' else cubic_spline
     planes = []
-    for p in case.get('boundaries', {}).get('symmetry', []):
+    boundaries = case.get('boundaries', {})
+    for p in boundaries.get('symmetry', []) + boundaries.get('wall', []):
         position = p.get('position', '0 mm')
         if position.split()[0] not in ('0', '0.0'):
             sys.exit('foot.py: symmetry plane off the origin (%s); the Taylor cases put theirs at 0' % position)

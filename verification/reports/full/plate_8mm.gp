@@ -8,10 +8,10 @@ set grid
 set key below left Left reverse noenhanced
 set xrange [0:*]
 $o0 << EOD
-4 199.2211563
-2 233.7213059
-1.6 237.201644
-1.3333333 240.2431658
+4 218.3135151
+2 230.9271315
+1.6 232.5438993
+1.3333333 232.4394652
 EOD
 plot $o0 u 1:2 w lp pt 7 ps 1.4 lc rgb '#1f77b4' t '8 mm plate at 298 m/s: residual velocity, simulated', \
      232.7248599 w l lw 2 dt 2 lc rgb '#1f77b4' t '8 mm plate at 298 m/s: residual velocity, experiment 232.7'

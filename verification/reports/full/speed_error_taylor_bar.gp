@@ -2,24 +2,24 @@
 set terminal pngcairo size 1000,700 enhanced font 'Sans,11'
 set output 'speed_error_taylor_bar.png'
 $m0s0 << EOD
-20.18790403 1.3933681
-17.35194017 4.625461192
-14.99114421 16.81185986
-13.44725973 46.42463309
+11.85208027 2.350403707
+9.469714169 8.572841015
+8.169093391 38.08963329
+7.609730212 97.97405108
 EOD
 $m0s1 << EOD
-20.18790409 1.293648622
-17.35194016 4.326466426
+11.8520813 2.314842451
+9.469713118 10.2952002
 EOD
 $m0s2 << EOD
-20.1878779 1.332499473
-17.35190201 3.888961557
+11.8520935 1.891346407
+9.469722777 8.85689502
 EOD
 $m0labels << EOD
-20.18790403 1.3933681 "1.27 mm"
-17.35194017 4.625461192 "0.8467 mm"
-14.99114421 16.81185986 "0.635 mm"
-13.44725973 46.42463309 "0.508 mm"
+11.85208027 2.350403707 "1.27 mm"
+9.469714169 8.572841015 "0.8467 mm"
+8.169093391 38.08963329 "0.635 mm"
+7.609730212 97.97405108 "0.508 mm"
 EOD
 set multiplot layout 1,1 title 'Taylor bar, OFHC copper at 190 m/s (cases/taylor-bar): wall time against |error| (2 threads)' noenhanced
 set logscale xy
@@ -30,10 +30,10 @@ set ylabel 'wall time [s]'
 set title 'final length (experiment 16.21 mm), target 3 %' noenhanced
 unset arrow
 unset label
-set xrange [1:60.56371228]
-set xtics ('1' 1, '2' 2, '5' 5, '10' 10, '20' 20, '50' 50)
-set yrange [0.646824311:92.84926619]
-set ytics ('1' 1, '2' 2, '5' 5, '10' 10, '20' 20, '50' 50)
+set xrange [1:35.5562805]
+set xtics ('1' 1, '2' 2, '5' 5, '10' 10, '20' 20)
+set yrange [0.9456732035:195.9481022]
+set ytics ('1' 1, '2' 2, '5' 5, '10' 10, '20' 20, '50' 50, '100' 100)
 set arrow 1 from 3, graph 0 to 3, graph 1 nohead dt 2 lw 2 lc rgb '#7f7f7f'
 set label 1 'target 3 %' at 3, graph 0.04 offset 0.5,0 left tc rgb '#555555'
 plot $m0s0 u 1:2 w lp pt 7 ps 1.6 lw 1.5 lc rgb '#1f1f1f' t 'reference, double', \
