@@ -80,17 +80,28 @@ BarRun run_bar(const std::string& name, const std::string& spacing) {
 
 const std::vector<std::string> kSpacings = {"0.5 mm", "0.4 mm", "0.3 mm"};
 
+std::vector<BarRun> run_spacings(const std::string& name) {
+  std::vector<BarRun> runs;
+  for (const std::string& s : kSpacings) runs.push_back(run_bar(name, s));
+  return runs;
+}
+
 // The change from the middle spacing to the finest is smaller than from the coarsest to the middle one.
-void expect_converging(const char* what, double coarse, double middle, double fine) {
-  std::printf("%s: %.3f / %.3f / %.3f mm, changes %.3f then %.3f mm\n", what, coarse * 1e3, middle * 1e3, fine * 1e3,
+void expect_converging(const std::string& what, double coarse, double middle, double fine) {
+  std::printf("%s: %.3f / %.3f / %.3f mm, changes %.3f then %.3f mm\n", what.c_str(), coarse * 1e3, middle * 1e3, fine * 1e3,
               (middle - coarse) * 1e3, (fine - middle) * 1e3);
   EXPECT_LT(std::abs(fine - middle), std::abs(middle - coarse)) << what << " is not converging";
+}
+// Length and shifted face diameter of the three runs both converging.
+void expect_shape_converging(const std::string& bar, const std::vector<BarRun>& r) {
+  expect_converging(bar + " final length", r[0].o.final_length, r[1].o.final_length, r[2].o.final_length);
+  expect_converging(bar + " face diameter (shifted)", r[0].o.impact_face_diameter_shifted,
+                    r[1].o.impact_face_diameter_shifted, r[2].o.impact_face_diameter_shifted);
 }
 
 TEST(TaylorBar, CopperAgainstExperiment) {
   constexpr double kLength = 16.21e-3, kDiameter = 13.56e-3;
-  std::vector<BarRun> runs;
-  for (const std::string& s : kSpacings) runs.push_back(run_bar("taylor-bar", s));
+  const std::vector<BarRun> runs = run_spacings("taylor-bar");
   for (std::size_t k = 1; k < runs.size(); ++k) {
     const BarRun& b = runs[k];
     EXPECT_NEAR(b.o.final_length / kLength, 1.0, 0.03) << "final length at " << kSpacings[k];
@@ -98,15 +109,12 @@ TEST(TaylorBar, CopperAgainstExperiment) {
     EXPECT_LT(b.heat_share, 0.10) << "heat share at " << kSpacings[k];
     EXPECT_LT(std::abs(b.energy_drift), 0.005) << "energy drift at " << kSpacings[k];
   }
-  expect_converging("copper final length", runs[0].o.final_length, runs[1].o.final_length, runs[2].o.final_length);
-  expect_converging("copper face diameter (shifted)", runs[0].o.impact_face_diameter_shifted,
-                    runs[1].o.impact_face_diameter_shifted, runs[2].o.impact_face_diameter_shifted);
+  expect_shape_converging("copper", runs);
 }
 
 TEST(TaylorBar, BilinearAgainstFiniteElement) {
   constexpr double kLength = 21.55e-3, kFootRadius = 7.1e-3;
-  std::vector<BarRun> runs;
-  for (const std::string& s : kSpacings) runs.push_back(run_bar("taylor-bar-bilinear", s));
+  const std::vector<BarRun> runs = run_spacings("taylor-bar-bilinear");
   for (std::size_t k = 0; k < runs.size(); ++k) {
     const BarRun& b = runs[k];
     EXPECT_NEAR(b.o.final_length / kLength, 1.0, 0.02) << "final length at " << kSpacings[k];
@@ -115,9 +123,7 @@ TEST(TaylorBar, BilinearAgainstFiniteElement) {
     EXPECT_GE(b.rim_consistency, 0.9) << "rim consistency at " << kSpacings[k];
     EXPECT_LT(std::abs(b.energy_drift), 0.005) << "energy drift at " << kSpacings[k];
   }
-  expect_converging("bilinear final length", runs[0].o.final_length, runs[1].o.final_length, runs[2].o.final_length);
-  expect_converging("bilinear foot diameter (shifted)", runs[0].o.impact_face_diameter_shifted,
-                    runs[1].o.impact_face_diameter_shifted, runs[2].o.impact_face_diameter_shifted);
+  expect_shape_converging("bilinear", runs);
 }
 
 }  // namespace
