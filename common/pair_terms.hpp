@@ -101,9 +101,8 @@ template <class Real> IMPACTSPH_HD Mat3<Real> crack_face_stress(const Mat3<Real>
 
 // Neighbour j's share of the momentum (F 2.11) and energy (consistent F 2.12) rates of i, with the
 // symmetrised corrected gradient gt = (1 - D_ij)(L_i^-1 + L_j^-1)/2 gw (F 2.14, F 4.10) and the Monaghan
-// viscosity Pi_ij (F 2.16-2.17, scaled by the pair mean of the Balsara factors; with visc.limited taken on
-// the limited midpoint jump of the pair, and only while the pair closes) and the artificial stress
-// (R_i + R_j) f_ij^n (Gray, Monaghan and Swift 2001; stress_factor = f_ij^n, 0 when off):
+// viscosity Pi_ij (F 2.16-2.17, scaled by the pair mean of the Balsara factors, taken on viscous_jump) and
+// the artificial stress (R_i + R_j) f_ij^n (Gray, Monaghan and Swift 2001; stress_factor = f_ij^n, 0 when off):
 //   dv_i/dt += m_j (A_i + A_j + (R_i + R_j) f_ij^n - Pi_ij I) gt   (m/s^2),
 //   de_i/dt -= m_j/2 v_ij . (A_i + A_j + (R_i + R_j) f_ij^n - Pi_ij I) gt   (J/kg/s);
 // at a crack face A_i + A_j becomes crack_face_stress(A_i, A_j) and carries no artificial stress.
@@ -113,11 +112,7 @@ IMPACTSPH_HD void add_momentum_energy_pair(const PairSide<Real>& i, const PairSi
                                            Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> vij, Real hij, Real m_j,
                                            Real stress_factor, Vec3<Real>& acc, Real& de) {
   const Vec3<Real> gt = (Real(0.5) * damaged_pair_factor(i.damage, j.damage)) * ((i.l_inverse + j.l_inverse) * gw);
-  // The limited jump of a closing pair; an opening pair gets no viscosity whatever its reconstruction says,
-  // so that the viscous heating m_i m_j Pi_ij v_ij . gt stays non-negative.
-  const Vec3<Real> v_visc = !visc.limited ? vij
-                            : dot(vij, xij) < Real(0) ? limited_midpoint_jump(visc, xij, vij, i.grad_v, j.grad_v, hij)
-                                                      : Vec3<Real>{Real(0), Real(0), Real(0)};
+  const Vec3<Real> v_visc = viscous_jump(visc, xij, vij, i.grad_v, j.grad_v, hij);
   const Real pi_ij = Real(0.5) * (i.av_factor + j.av_factor) *
                      monaghan_viscosity(visc, xij, v_visc, hij, Real(0.5) * (i.sound_speed + j.sound_speed),
                                         Real(0.5) * (i.rho + j.rho));

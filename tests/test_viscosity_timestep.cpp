@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <limits>
 #include <type_traits>
@@ -357,6 +358,63 @@ TEST(LimitedMidpointJump, FadesOutAtCloseApproach) {
   EXPECT_NEAR(jump_at(1.0 * dx), 0.0, 1e-12);
   EXPECT_NEAR(jump_at(0.8 * dx), 1 - std::exp(-1.0), 1e-12);
   EXPECT_NEAR(jump_at(0.5 * dx), 1 - std::exp(-6.25), 1e-12);
+}
+
+// The jump the term acts on (viscous_jump): a pair in shear has v_ij . x_ij = 0 to round-off. On a pair
+// whose two sides stretch along x_ij the reconstruction closes it by 2 m/s; gated on the raw jump alone, a
+// finite Pi then switched on at v_ij . x_ij = -1e-12 and off at +1e-12. The raw jump caps it instead, so
+// both sides of the gate give (next to) nothing.
+TEST(ViscousJump, ContinuousWhereAPairInShearStopsClosing) {
+  const double h = 2e-3;
+  const ViscosityParams<double> p = limited(2.0);
+  const Vec3<double> xij{1e-3, 0, 0};
+  const Mat3<double> stretch{{{2e3, 0, 0}, {0, 0, 0}, {0, 0, 0}}};  // 1/s: each side's slope x . G x = 2e-3 m^2/s
+  const double scale = impactsph::monaghan_viscosity(p, xij, Vec3<double>{-2, 0, 0}, h, 4000.0, 8900.0);
+  ASSERT_GT(scale, 0.0);
+  for (const double vx : {-1e-9, -1e-12, 0.0, 1e-12, 1e-9}) {
+    const Vec3<double> vij{vx, 50, 0};
+    const Vec3<double> jump = impactsph::viscous_jump(p, xij, vij, stretch, stretch, h);
+    EXPECT_LT(impactsph::monaghan_viscosity(p, xij, jump, h, 4000.0, 8900.0), 1e-6 * scale) << vx;
+  }
+  // the reconstruction on its own would close this pair at 2 m/s
+  const Vec3<double> alone = impactsph::limited_midpoint_jump(p, xij, Vec3<double>{-1e-12, 50, 0}, stretch, stretch, h);
+  EXPECT_NEAR(impactsph::dot(alone, xij) / 1e-3, -2.0, 1e-6);
+}
+
+// Over closing pairs with gradients of every kind, the limited term is at most the term on the raw jump; an
+// opening pair gets none; with the limiter off the raw jump is taken as it is.
+TEST(ViscousJump, NeverMoreThanTheTermOnTheRawJump) {
+  const double h = 2e-3, c = 4000.0, rho = 8900.0;
+  const ViscosityParams<double> p = limited(2.0);
+  ViscosityParams<double> off = p;
+  off.limited = false;
+  std::uint64_t state = 12345;
+  auto uniform = [&state]() {  // in [-1, 1), a fixed sequence
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-52 - 1.0;
+  };
+  int capped = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const Vec3<double> xij{1.5e-3 * uniform(), 1.5e-3 * uniform(), 1.5e-3 * uniform()};
+    const Vec3<double> vij{20 * uniform(), 20 * uniform(), 20 * uniform()};
+    Mat3<double> gi, gj;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        gi.m[a][b] = 2e4 * uniform();
+        gj.m[a][b] = 2e4 * uniform();
+      }
+    const Vec3<double> jump = impactsph::viscous_jump(p, xij, vij, gi, gj, h);
+    const double raw = impactsph::monaghan_viscosity(p, xij, vij, h, c, rho);
+    const double lim = impactsph::monaghan_viscosity(p, xij, jump, h, c, rho);
+    EXPECT_LE(lim, raw) << n;
+    if (impactsph::dot(vij, xij) >= 0) EXPECT_EQ(lim, 0.0) << n;
+    const Vec3<double> recon = impactsph::limited_midpoint_jump(p, xij, vij, gi, gj, h);
+    if (impactsph::dot(vij, xij) < 0 && impactsph::dot(recon, xij) < impactsph::dot(vij, xij)) ++capped;
+    const Vec3<double> as_is = impactsph::viscous_jump(off, xij, vij, gi, gj, h);
+    EXPECT_EQ(as_is.x, vij.x);
+    EXPECT_EQ(as_is.z, vij.z);
+  }
+  EXPECT_GT(capped, 100) << "the sample must hold pairs that the reconstruction closes harder than the raw jump";
 }
 
 }  // namespace
