@@ -8,16 +8,16 @@ set grid
 set key below left Left reverse noenhanced
 set xrange [0:*]
 $o0 << EOD
-1.27 18.13122221
-0.8467 17.74504067
-0.635 17.53421004
-0.508 17.44353727
+1.27 18.13998677
+0.8467 17.75274716
+0.635 17.53907555
+0.508 17.44647914
 EOD
 $o1 << EOD
-1.27 11.55110101
-0.8467 12.28716385
-0.635 13.3334828
-0.508 13.67694496
+1.27 11.54150818
+0.8467 12.27894746
+0.635 13.39045902
+0.508 13.72941552
 EOD
 plot $o0 u 1:2 w lp pt 7 ps 1.4 lc rgb '#1f77b4' t 'Taylor bar: final length, simulated', \
      16.21 w l lw 2 dt 2 lc rgb '#1f77b4' t 'Taylor bar: final length, experiment 16.21', \
