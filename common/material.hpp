@@ -226,26 +226,4 @@ IMPACTSPH_HD PlasticResult<Real> plastic_update(const MaterialParams<Real>& m, S
   return r;
 }
 
-// The same without the pressure: a pressure-dependent model (JH-2) takes the EOS pressure at rho and
-// e = 0, which is exact for the polynomial EOS of JH-2 except for the bulking increment. Solvers that
-// track bulking pass the pressure to the overload above.
-template <class Real>
-IMPACTSPH_HD PlasticResult<Real> plastic_update(const MaterialParams<Real>& m, Sym3<Real>& S, Real eps_p, Real eps_rate,
-                                                Real T, Real rho, Real damage) {
-  Real P = Real(0);
-  if (strength_needs_pressure(m)) {
-    Real c;
-    P = eos_pressure(m.eos, rho, Real(0), c);
-  }
-  return plastic_update(m, S, eps_p, eps_rate, T, rho, damage, P);
-}
-
-// Plastic correction after the elastic stress update; returns the equivalent plastic strain increment.
-// Only PerfectlyPlastic yields here (its flow stress needs no state); a JohnsonCook material needs the
-// plastic strain, strain rate and temperature of plastic_update, and is left untouched by this function.
-template <class Real> IMPACTSPH_HD Real plastic_correction(const MaterialParams<Real>& m, Sym3<Real>& S) {
-  if (m.strength.kind != StrengthKind::PerfectlyPlastic) return Real(0);
-  return plastic_update(m, S, Real(0), Real(0), m.room_temperature, m.eos.rho0, Real(0)).d_eps_p;
-}
-
 }  // namespace impactsph

@@ -13,10 +13,8 @@
 #if defined(__CUDACC__)
 #include <cuda_runtime.h>
 #define IMPACTSPH_LAMBDA __host__ __device__
-#define IMPACTSPH_GPU_HD __host__ __device__
 #else
 #define IMPACTSPH_LAMBDA
-#define IMPACTSPH_GPU_HD
 #if defined(__SSE__)
 #include <xmmintrin.h>
 #endif

@@ -54,7 +54,7 @@ template <class T> T* raw(DVec<T>& v) { return thrust::raw_pointer_cast(v.data()
 using Vec3p = Vec3<double>;  // positions, m, double in both precisions
 constexpr int kMaxPlanes = 6;
 
-template <class To, class From> IMPACTSPH_GPU_HD inline Vec3<To> cast3(Vec3<From> a) {
+template <class To, class From> IMPACTSPH_HD Vec3<To> cast3(Vec3<From> a) {
   return {static_cast<To>(a.x), static_cast<To>(a.y), static_cast<To>(a.z)};
 }
 
@@ -64,11 +64,11 @@ struct Grid {
   double lo[3];
   double cell;
   std::int64_t dims[3];
-  IMPACTSPH_GPU_HD std::int64_t coord(double x, int a) const {
+  IMPACTSPH_HD std::int64_t coord(double x, int a) const {
     const std::int64_t c = static_cast<std::int64_t>((x - lo[a]) / cell);
     return c < 0 ? 0 : (c > dims[a] - 1 ? dims[a] - 1 : c);
   }
-  IMPACTSPH_GPU_HD std::uint32_t key(Vec3p x) const {
+  IMPACTSPH_HD std::uint32_t key(Vec3p x) const {
     return static_cast<std::uint32_t>((coord(x.z, 2) * dims[1] + coord(x.y, 1)) * dims[0] + coord(x.x, 0));
   }
 };
@@ -79,7 +79,7 @@ struct CellRange {
   const std::int32_t* cell_start;
   Grid grid;
   // Calls f(j) for every sorted slot j != s in the 5x5x5 cells around the cell of slot s.
-  template <class F> IMPACTSPH_GPU_HD void for_each_candidate(std::int64_t s, F&& f) const {
+  template <class F> IMPACTSPH_HD void for_each_candidate(std::int64_t s, F&& f) const {
     const Vec3p xs = x[s];
     const std::int64_t cx = grid.coord(xs.x, 0), cy = grid.coord(xs.y, 1), cz = grid.coord(xs.z, 2);
     const std::int64_t x0 = cx - 2 < 0 ? 0 : cx - 2, x1 = cx + 2 > grid.dims[0] - 1 ? grid.dims[0] - 1 : cx + 2;
@@ -99,25 +99,25 @@ struct Box {
   Vec3p lo, hi;
 };
 struct PointBox {
-  IMPACTSPH_GPU_HD Box operator()(Vec3p x) const { return {x, x}; }
+  IMPACTSPH_HD Box operator()(Vec3p x) const { return {x, x}; }
 };
 struct MergeBox {
-  IMPACTSPH_GPU_HD Box operator()(Box a, Box b) const {
+  IMPACTSPH_HD Box operator()(Box a, Box b) const {
     return {{a.lo.x < b.lo.x ? a.lo.x : b.lo.x, a.lo.y < b.lo.y ? a.lo.y : b.lo.y, a.lo.z < b.lo.z ? a.lo.z : b.lo.z},
             {a.hi.x > b.hi.x ? a.hi.x : b.hi.x, a.hi.y > b.hi.y ? a.hi.y : b.hi.y, a.hi.z > b.hi.z ? a.hi.z : b.hi.z}};
   }
 };
 struct MinOf {
-  template <class T> IMPACTSPH_GPU_HD T operator()(T a, T b) const { return a < b ? a : b; }
+  template <class T> IMPACTSPH_HD T operator()(T a, T b) const { return a < b ? a : b; }
 };
 struct MaxOf {
-  template <class T> IMPACTSPH_GPU_HD T operator()(T a, T b) const { return a > b ? a : b; }
+  template <class T> IMPACTSPH_HD T operator()(T a, T b) const { return a > b ? a : b; }
 };
 
 // The pass 1 sums of a particle as plain Reals, the form IMPACTSPH_SIMD_SUMS reduces: L, L_damaged, G
 // (row-major) and the density gradient.
 constexpr int kGradientSums = 30;
-template <class Real> IMPACTSPH_GPU_HD inline void add_flat(Real* sum, const GradientSums<Real>& g) {
+template <class Real> IMPACTSPH_HD void add_flat(Real* sum, const GradientSums<Real>& g) {
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
       sum[3 * r + c] += g.L.m[r][c];
@@ -128,7 +128,7 @@ template <class Real> IMPACTSPH_GPU_HD inline void add_flat(Real* sum, const Gra
   sum[28] += g.grad_rho.y;
   sum[29] += g.grad_rho.z;
 }
-template <class Real> IMPACTSPH_GPU_HD inline GradientSums<Real> unflatten_gradient_sums(const Real* sum) {
+template <class Real> IMPACTSPH_HD GradientSums<Real> unflatten_gradient_sums(const Real* sum) {
   GradientSums<Real> g;
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
@@ -154,7 +154,7 @@ struct PairContact {
   Real scale;     // K_p
   Real distance;  // contact distance, m (when srad is 0)
   Real srad;      // > 0: the particles touch at srad (h_i + h_j)/2 instead (X eqs 18, 20)
-  IMPACTSPH_GPU_HD Real touch(Real h_i, Real h_j) const { return contact_touch_distance(srad, distance, h_i, h_j); }
+  IMPACTSPH_HD Real touch(Real h_i, Real h_j) const { return contact_touch_distance(srad, distance, h_i, h_j); }
 };
 
 // Variable smoothing length of a body (X eqs 9-10): on or off, and the bounds of h (m).
@@ -184,7 +184,7 @@ struct Params {
 // Mirror image of a point through the planes of `mask`, taken in plane order as the reference does
 // (each plane mirrors the reals and the images made so far): exists when the point, as mirrored so far,
 // lies within `margin` of each plane it is mirrored in. x' = sign x + shift per axis.
-IMPACTSPH_GPU_HD inline bool mirror_image(const Plane* planes, int plane_count, int mask, Vec3p x, double margin,
+IMPACTSPH_HD bool mirror_image(const Plane* planes, int plane_count, int mask, Vec3p x, double margin,
                                           Vec3p& sign, Vec3p& shift) {
   sign = Vec3p{1, 1, 1};
   shift = Vec3p{0, 0, 0};
@@ -197,7 +197,7 @@ IMPACTSPH_GPU_HD inline bool mirror_image(const Plane* planes, int plane_count, 
 // The walls (bit k for plane k) that a particle with deviatoric stress S and pressure P lets go of
 // (lets_go_of_wall, common/integration.hpp).
 template <class Real>
-IMPACTSPH_GPU_HD unsigned walls_let_go(const Plane* planes, int plane_count, const Sym3<Real>& S, Real P,
+IMPACTSPH_HD unsigned walls_let_go(const Plane* planes, int plane_count, const Sym3<Real>& S, Real P,
                                        const Vec3<Real>& v) {
   unsigned let_go = 0;
   for (int k = 0; k < plane_count; ++k)
@@ -743,10 +743,10 @@ class Solver final : public GpuStepper {
     const std::int32_t* list;
     const PairContact<Real>* contact;
     int body_count;
-    IMPACTSPH_GPU_HD const PairContact<Real>& pair(std::int32_t a, std::int32_t b) const {
+    IMPACTSPH_HD const PairContact<Real>& pair(std::int32_t a, std::int32_t b) const {
       return contact[a * body_count + b];
     }
-    IMPACTSPH_GPU_HD bool in_penalty_contact(std::int32_t a) const {
+    IMPACTSPH_HD bool in_penalty_contact(std::int32_t a) const {
       for (std::int32_t b = 0; b < body_count; ++b)
         if (pair(a, b).penalty) return true;
       return false;

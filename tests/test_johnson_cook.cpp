@@ -176,7 +176,7 @@ TYPED_TEST(JohnsonCookTyped, PlasticUpdateReturnsToFlowStress) {
   const double seq = double(von_mises(trial));
   ASSERT_GT(seq, 1.3 * sy);
   Sym3<Real> S = trial;
-  const PlasticResult<Real> r = plastic_update(m, S, eps_p, rate, T, rho, Real(0));
+  const PlasticResult<Real> r = plastic_update(m, S, eps_p, rate, T, rho, Real(0), Real(0));
   EXPECT_NEAR(double(von_mises(S)), sy, tol * sy);
   EXPECT_NEAR(double(S.xy) / double(trial.xy), sy / seq, tol);
   EXPECT_NEAR(double(S.zz) / double(trial.zz), sy / seq, tol);
@@ -189,7 +189,7 @@ TYPED_TEST(JohnsonCookTyped, PlasticUpdateReturnsToFlowStress) {
   MaterialParams<Real> cold = m;
   cold.specific_heat = 0;
   Sym3<Real> S2 = trial;
-  const PlasticResult<Real> r2 = plastic_update(cold, S2, eps_p, rate, T, rho, Real(0));
+  const PlasticResult<Real> r2 = plastic_update(cold, S2, eps_p, rate, T, rho, Real(0), Real(0));
   EXPECT_EQ(r2.d_T, Real(0));
   EXPECT_EQ(r2.d_eps_p, r.d_eps_p);
   EXPECT_EQ(r2.plastic_work, r.plastic_work);
@@ -209,7 +209,7 @@ TYPED_TEST(JohnsonCookTyped, PlasticUpdateLeavesElasticAndBelowYieldAlone) {
   for (StrengthKind k : {StrengthKind::Elastic, StrengthKind::Hydrodynamic}) {
     m.strength.kind = k;
     Sym3<Real> S = trial;
-    const PlasticResult<Real> r = plastic_update(m, S, Real(0.1), Real(1e3), Real(kRoom), Real(7850), Real(0));
+    const PlasticResult<Real> r = plastic_update(m, S, Real(0.1), Real(1e3), Real(kRoom), Real(7850), Real(0), Real(0));
     EXPECT_TRUE(same(S, trial));
     EXPECT_EQ(r.d_eps_p, Real(0));
     EXPECT_EQ(r.d_T, Real(0));
@@ -218,44 +218,40 @@ TYPED_TEST(JohnsonCookTyped, PlasticUpdateLeavesElasticAndBelowYieldAlone) {
   m.strength.kind = StrengthKind::JohnsonCook;
   const Sym3<Real> small = Real(0.3) * trial;  // von Mises ~ 370 MPa < A
   Sym3<Real> S = small;
-  EXPECT_EQ(plastic_update(m, S, Real(0), Real(1e3), Real(kRoom), Real(7850), Real(0)).d_eps_p, Real(0));
+  EXPECT_EQ(plastic_update(m, S, Real(0), Real(1e3), Real(kRoom), Real(7850), Real(0), Real(0)).d_eps_p, Real(0));
   EXPECT_TRUE(same(S, small));
   Sym3<Real> failed = trial;
-  const PlasticResult<Real> rf = plastic_update(m, failed, Real(0.1), Real(1e3), Real(kRoom), Real(7850), Real(1));
+  const PlasticResult<Real> rf = plastic_update(m, failed, Real(0.1), Real(1e3), Real(kRoom), Real(7850), Real(1), Real(0));
   EXPECT_TRUE(same(failed, Sym3<Real>::zero()));
   EXPECT_EQ(rf.d_eps_p, Real(0));
   EXPECT_EQ(rf.d_T, Real(0));
   Sym3<Real> partly = trial, intact = trial;
-  const Real d1 = plastic_update(m, partly, Real(0.1), Real(1e3), Real(kRoom), Real(7850), Real(0.6)).d_eps_p;
-  const Real d0 = plastic_update(m, intact, Real(0.1), Real(1e3), Real(kRoom), Real(7850), Real(0)).d_eps_p;
+  const Real d1 = plastic_update(m, partly, Real(0.1), Real(1e3), Real(kRoom), Real(7850), Real(0.6), Real(0)).d_eps_p;
+  const Real d0 = plastic_update(m, intact, Real(0.1), Real(1e3), Real(kRoom), Real(7850), Real(0), Real(0)).d_eps_p;
   EXPECT_EQ(d1, d0);
   EXPECT_TRUE(same(partly, intact));
   // Melted: zero flow stress, the deviator goes, no work is done.
   Sym3<Real> melted = trial;
-  const PlasticResult<Real> rm = plastic_update(m, melted, Real(0.1), Real(1e3), Real(1900), Real(7850), Real(0));
+  const PlasticResult<Real> rm = plastic_update(m, melted, Real(0.1), Real(1e3), Real(1900), Real(7850), Real(0), Real(0));
   EXPECT_EQ(von_mises(melted), Real(0));
   EXPECT_EQ(rm.plastic_work, Real(0));
 }
 
-// plastic_correction(m, S) still does the perfectly plastic return, now through plastic_update (same bits);
-// it leaves a Johnson-Cook material to plastic_update.
-TEST(PlasticUpdate, PlasticCorrectionDelegates) {
+// A perfectly plastic material returns to its yield stress whatever the plastic strain, rate and
+// temperature: plastic_update is then radial_return itself (same bits).
+TEST(PlasticUpdate, PerfectlyPlasticIsTheRadialReturnWhateverTheState) {
   MaterialParams<double> m = weldox_material<double>();
   m.strength.kind = StrengthKind::PerfectlyPlastic;
   m.strength.yield_stress = 4.9e8;
   const Sym3<double> trial{9e8, -4e8, -5e8, 2e8, -1e8, 1.5e8};
   Sym3<double> a = trial, b = trial, c = trial;
-  const double da = plastic_correction(m, a);
-  const double db = plastic_update(m, b, 0.7, 1e5, 1500.0, 7850.0, 0.0).d_eps_p;  // state-independent
+  const double da = plastic_update(m, a, 0.0, 0.0, m.room_temperature, m.eos.rho0, 0.0, 0.0).d_eps_p;
+  const double db = plastic_update(m, b, 0.7, 1e5, 1500.0, 7850.0, 0.0, 0.0).d_eps_p;
   const double dc = radial_return(c, 4.9e8, m.strength.shear_modulus);
   EXPECT_EQ(da, db);
   EXPECT_EQ(da, dc);
   EXPECT_EQ(a.xx, c.xx);
   EXPECT_EQ(a.zx, c.zx);
-  m.strength.kind = StrengthKind::JohnsonCook;
-  Sym3<double> d = trial;
-  EXPECT_EQ(plastic_correction(m, d), 0.0);
-  EXPECT_EQ(d.xx, trial.xx);
 }
 
 // Uniaxial strain, eps_xx = eps, others 0 (a plate-impact path), integrated in small increments with the
@@ -289,7 +285,7 @@ void run_uniaxial_strain(double tol) {
   auto step = [&](double r) {
     const Mat3<Real> gv = {{{Real(r), 0, 0}, {0, 0, 0}, {0, 0, 0}}};
     S = S + Real(dt) * deviatoric_stress_rate(m, S, gv);
-    const PlasticResult<Real> res = plastic_update(m, S, Real(eps_p), Real(std::abs(r)), Real(293), Real(rho), Real(0));
+    const PlasticResult<Real> res = plastic_update(m, S, Real(eps_p), Real(std::abs(r)), Real(293), Real(rho), Real(0), Real(0));
     eps += r * dt;
     eps_p += double(res.d_eps_p);
     work += double(res.plastic_work);
@@ -344,7 +340,7 @@ TEST(PlasticUpdate, UniaxialStrainJohnsonCookFollowsFlowStress) {
     S = S + dt * deviatoric_stress_rate(m, S, gv);
     const double er = equivalent_strain_rate(gv);
     const double sy = johnson_cook_yield(m.strength, eps_p, er, T, m.room_temperature);
-    const PlasticResult<double> r = plastic_update(m, S, eps_p, er, T, rho, 0.0);
+    const PlasticResult<double> r = plastic_update(m, S, eps_p, er, T, rho, 0.0, 0.0);
     if (r.d_eps_p > 0) {
       ++plastic_steps;
       ASSERT_NEAR(von_mises(S), sy, 1e-12 * sy) << k;

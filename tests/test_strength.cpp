@@ -204,11 +204,11 @@ TEST(StrengthDispatch, MaterialSelectsStrengthModel) {
   EXPECT_EQ(r1.zx, ref.zx);
   m.strength.yield_stress = 1e6;  // far below von Mises of S, but Elastic never yields
   Sym3<double> s1 = S;
-  EXPECT_EQ(plastic_correction(m, s1), 0.0);
+  EXPECT_EQ(plastic_update(m, s1, 0.0, 0.0, m.room_temperature, m.eos.rho0, 0.0, 0.0).d_eps_p, 0.0);
   EXPECT_EQ(s1.xx, S.xx);
   m.strength.kind = StrengthKind::PerfectlyPlastic;
   Sym3<double> s2 = S;
-  EXPECT_GT(plastic_correction(m, s2), 0.0);
+  EXPECT_GT(plastic_update(m, s2, 0.0, 0.0, m.room_temperature, m.eos.rho0, 0.0, 0.0).d_eps_p, 0.0);
   EXPECT_NEAR(von_mises(s2), 1e6, 1e-6);
 }
 
