@@ -26,7 +26,7 @@
 #include "app/gnuplot.hpp"
 #include "app/picture.hpp"
 #include "app/run_args.hpp"
-#include "app/scoped_signals.hpp"
+#include "common/scoped_signals.hpp"
 #include "app/solver_choice.hpp"
 #include "common/case_file.hpp"
 #include "common/checkpoint.hpp"

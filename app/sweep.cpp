@@ -26,7 +26,7 @@
 #include <thread>
 #include <toml++/toml.h>
 
-#include "app/scoped_signals.hpp"
+#include "common/scoped_signals.hpp"
 #include "app/run_args.hpp"
 #include "common/case_file.hpp"
 #include "common/errors.hpp"

@@ -10,11 +10,13 @@
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "common/checkpoint.hpp"
 #include "common/errors.hpp"
 #include "common/output.hpp"
+#include "common/scoped_signals.hpp"
 
 namespace impactsph {
 
@@ -27,23 +29,15 @@ extern "C" void on_stop_signal(int sig) { g_stop_signal.store(sig); }
 // Not for concurrent runs (the handlers and the flag are process-wide): those pass install = false.
 class StopSignals {
  public:
-  explicit StopSignals(bool install) : installed_(install) {
-    if (!installed_) return;
+  explicit StopSignals(bool install) {
+    if (!install) return;
     g_stop_signal.store(0);
-    old_int_ = std::signal(SIGINT, on_stop_signal);
-    old_term_ = std::signal(SIGTERM, on_stop_signal);
+    guard_.emplace(on_stop_signal);
   }
-  ~StopSignals() {
-    if (!installed_) return;
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-  }
-  int received() const { return installed_ ? g_stop_signal.load() : 0; }
+  int received() const { return guard_ ? g_stop_signal.load() : 0; }
 
  private:
-  bool installed_;
-  void (*old_int_)(int) = nullptr;
-  void (*old_term_)(int) = nullptr;
+  std::optional<ScopedSignals> guard_;
 };
 
 std::string format_seconds(double s) {

@@ -12,6 +12,11 @@ inline double search_reach(double support_at_h_max, double contact_distance, dou
   return support_at_h_max > c ? support_at_h_max : c;
 }
 
+// The skin a list is built with, as a share of the reach: a larger skin keeps a list over more steps but
+// gives every row more candidates to test.
+constexpr double kVerletSkinShare = 0.05;
+inline double verlet_skin(double reach) { return kVerletSkinShare * reach; }
+
 // A list built with radius reach + skin still holds every pair that can come within reach at either
 // stage of the next step of dt while 2 (largest displacement since the build + dt vmax) + growth of the
 // reach (a variable h) < skin: each of the two particles moved at most that far (by the midpoint a

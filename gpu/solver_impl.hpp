@@ -569,9 +569,9 @@ class Solver final : public GpuStepper {
     const std::int64_t n = n_;
     if (n == 0) return;
     ++sorts_;
-    // Search radius: the reach at the largest h now, plus a skin of 5 % of it.
+    // Search radius: the reach at the largest h now, plus its skin (verlet_skin).
     reach_at_sort_ = search_reach(max_smoothing_length());
-    skin_ = 0.05 * reach_at_sort_;
+    skin_ = verlet_skin(reach_at_sort_);
     radius_ = reach_at_sort_ + skin_;
     const double cell = 0.5 * radius_;
     {

@@ -363,7 +363,7 @@ void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double ski
   stats_.ghosts = ghosts_.size();
 }
 
-// The list is kept while verlet_list_holds (common/verlet.hpp); the skin is 5 % of the reach.
+// The list is kept while verlet_list_holds (common/verlet.hpp); the skin is verlet_skin of the reach.
 void ReferenceSolver::update_neighbours(const ParticleSet& p, double dt) {
   const std::size_t n = p.size();
   const std::int64_t ni = static_cast<std::int64_t>(n);
@@ -378,7 +378,7 @@ void ReferenceSolver::update_neighbours(const ParticleSet& p, double dt) {
   const double growth = std::max(0.0, reach - reach_at_build_);
   if (same && verlet_list_holds(moved, dt, vmax, growth, skin_)) return;
   reach_at_build_ = reach;
-  skin_ = 0.05 * reach;
+  skin_ = verlet_skin(reach);
   build_neighbours(p.pos, skin_);
   pos_at_build_ = p.pos;
   list_valid_ = true;

@@ -1,5 +1,5 @@
 // SIGINT and SIGTERM routed to one handler for the lifetime of a command that runs several simulations
-// (ballistic-limit, sweep); the previous handlers come back when it ends.
+// (ballistic-limit, sweep) or one run (driver.cpp); the previous handlers come back when it ends.
 #pragma once
 #include <csignal>
 
