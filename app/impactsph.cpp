@@ -231,20 +231,7 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
   }
   const CaseObservables& o = r.observables;
   if (r.settled) std::printf("  stopped early: the residual velocity was steady\n");
-  if (o.taylor_bar)
-    std::printf("final_length: %.4f mm\nimpact_face_diameter: %.4f mm\nimpact_face_diameter_shifted: %.4f mm\n"
-                "impact_face_diameter_area: %.4f mm\n", o.final_length * 1e3, o.impact_face_diameter * 1e3,
-                o.impact_face_diameter_shifted * 1e3, o.impact_face_diameter_area * 1e3);
-  if (o.projectile) {
-    std::printf("residual_velocity: %.2f m/s\nresidual_mass: %.2f g\neroded_mass: %.2f g\n", o.residual_velocity,
-                o.residual_mass * 1e3, o.eroded_mass * 1e3);
-    if (o.settled_time >= 0) std::printf("settled_time: %.1f us\n", o.settled_time * 1e6);
-    else std::printf("settled_time: not settled by the end time\n");
-  }
-  if (o.target)
-    std::printf("plug_velocity: %.2f m/s\nplug_mass: %.2f g\nperforated: %s\n", o.plug_velocity, o.plug_mass * 1e3,
-                o.perforated ? "yes" : "no");
-  if (o.target) std::printf("damage_fraction: %.4f\n", o.damage_fraction);
+  for (const ObservableRow& row : observable_rows(o)) std::printf("%s\n", format_observable(row).c_str());
   bool picture = false;
   if (scene.spec.output.picture) {
     const std::string warning = write_and_draw_picture(opt.out_dir, "picture", scene, scene.particles, r.clock.time,

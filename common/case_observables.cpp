@@ -1,6 +1,7 @@
 #include "common/case_observables.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <numeric>
 #include <limits>
@@ -256,6 +257,41 @@ void track_settling(const ObservablesSpec& spec, double time, double v, RunClock
 
 bool impact_is_over(const ObservablesSpec& spec, const CaseObservables& o) {
   return !o.target || o.perforated || o.residual_velocity <= spec.settle_tolerance;
+}
+
+std::vector<ObservableRow> observable_rows(const CaseObservables& o) {
+  using K = ObservableRow::Kind;
+  std::vector<ObservableRow> rows;
+  if (o.taylor_bar) {
+    rows.push_back({"final_length", o.final_length, "mm", 1e3, 4, K::Number});
+    rows.push_back({"impact_face_diameter", o.impact_face_diameter, "mm", 1e3, 4, K::Number});
+    rows.push_back({"impact_face_diameter_shifted", o.impact_face_diameter_shifted, "mm", 1e3, 4, K::Number});
+    rows.push_back({"impact_face_diameter_area", o.impact_face_diameter_area, "mm", 1e3, 4, K::Number});
+  }
+  if (o.projectile) {
+    rows.push_back({"residual_velocity", o.residual_velocity, "m/s", 1, 2, K::Number});
+    rows.push_back({"residual_mass", o.residual_mass, "g", 1e3, 2, K::Number});
+    rows.push_back({"eroded_mass", o.eroded_mass, "g", 1e3, 2, K::Number});
+    rows.push_back({"settled_time", o.settled_time, "us", 1e6, 1, K::TimeOrNever});
+  }
+  if (o.target) {
+    rows.push_back({"plug_velocity", o.plug_velocity, "m/s", 1, 2, K::Number});
+    rows.push_back({"plug_mass", o.plug_mass, "g", 1e3, 2, K::Number});
+    rows.push_back({"perforated", o.perforated ? 1.0 : 0.0, "", 1, 0, K::Flag});
+    rows.push_back({"damage_fraction", o.damage_fraction, "", 1, 4, K::Number});
+  }
+  return rows;
+}
+
+std::string format_observable(const ObservableRow& row) {
+  std::string text = row.name + ": ";
+  if (row.kind == ObservableRow::Kind::Flag) return text + (row.value != 0 ? "yes" : "no");
+  if (row.kind == ObservableRow::Kind::TimeOrNever && row.value < 0) return text + "not settled by the end time";
+  char number[64];
+  std::snprintf(number, sizeof number, "%.*f", row.digits, row.value * row.scale);
+  text += number;
+  if (*row.unit) text += std::string(" ") + row.unit;
+  return text;
 }
 
 }  // namespace impactsph

@@ -3,6 +3,7 @@
 // the whole physical body: a body cut by k symmetry planes is 2^k times its model.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "common/run_state.hpp"
 #include "common/scene.hpp"
@@ -29,6 +30,24 @@ struct CaseObservables {
 };
 
 CaseObservables measure_observables(const Scene& scene, const ParticleSet& p);
+
+// One observable as a row: its name (the key in summary.json's "observables"), its value in SI, and how a
+// person reads it (the unit, the factor from SI to that unit, the digits). The one list that the run's
+// printout and summary.json are both written from, so that they cannot disagree.
+struct ObservableRow {
+  enum class Kind { Number, Flag, TimeOrNever };  // Flag: value 0 or 1; TimeOrNever: value < 0 is "never"
+  std::string name;
+  double value = 0;         // SI
+  const char* unit = "";    // as printed
+  double scale = 1;         // SI to unit
+  int digits = 2;           // after the decimal point, as printed
+  Kind kind = Kind::Number;
+};
+
+// The rows of the observables the case asked for, in the order they are printed.
+std::vector<ObservableRow> observable_rows(const CaseObservables& o);
+// "residual_velocity: 232.58 m/s", "perforated: yes", "settled_time: not settled by the end time".
+std::string format_observable(const ObservableRow& row);
 
 // Tracks whether the residual velocity has settled (state kept in RunClock so a restart continues it):
 // the velocity must first leave its initial value by more than the tolerance (the impact has begun),

@@ -9,8 +9,8 @@
 #include <csignal>
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <sstream>
 
 #include "common/checkpoint.hpp"
@@ -32,12 +32,12 @@ class StopSignals {
   explicit StopSignals(bool install) {
     if (!install) return;
     g_stop_signal.store(0);
-    guard_.emplace(on_stop_signal);
+    guard_ = std::make_unique<ScopedSignals>(on_stop_signal);
   }
   int received() const { return guard_ ? g_stop_signal.load() : 0; }
 
  private:
-  std::optional<ScopedSignals> guard_;
+  std::unique_ptr<ScopedSignals> guard_;  // null when not installed
 };
 
 std::string format_seconds(double s) {
@@ -151,25 +151,11 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
                            {"other_internal_energy_J", gained - plastic},
                            {"plastic_work_share", k0 > 0 ? plastic / k0 : 0.0},
                            {"other_internal_share", k0 > 0 ? (gained - plastic) / k0 : 0.0}};
-  const CaseObservables& o = r.observables;
   nlohmann::json obs = nlohmann::json::object();
-  if (o.taylor_bar) {
-    obs["final_length"] = o.final_length;
-    obs["impact_face_diameter"] = o.impact_face_diameter;
-    obs["impact_face_diameter_shifted"] = o.impact_face_diameter_shifted;
-    obs["impact_face_diameter_area"] = o.impact_face_diameter_area;
-  }
-  if (o.projectile) {
-    obs["residual_velocity"] = o.residual_velocity;
-    obs["residual_mass"] = o.residual_mass;
-    obs["eroded_mass"] = o.eroded_mass;
-    obs["settled_time"] = o.settled_time >= 0 ? nlohmann::json(o.settled_time) : nlohmann::json(nullptr);
-  }
-  if (o.target) {
-    obs["plug_velocity"] = o.plug_velocity;
-    obs["plug_mass"] = o.plug_mass;
-    obs["perforated"] = o.perforated;
-    obs["damage_fraction"] = o.damage_fraction;
+  for (const ObservableRow& row : observable_rows(r.observables)) {
+    if (row.kind == ObservableRow::Kind::Flag) obs[row.name] = row.value != 0;
+    else if (row.kind == ObservableRow::Kind::TimeOrNever && row.value < 0) obs[row.name] = nullptr;
+    else obs[row.name] = row.value;
   }
   j["observables"] = obs;
   j["settled"] = r.settled;

@@ -7,10 +7,8 @@ namespace impactsph {
 
 class ScopedSignals {
  public:
-  explicit ScopedSignals(void (*handler)(int)) {
-    old_int_ = std::signal(SIGINT, handler);
-    old_term_ = std::signal(SIGTERM, handler);
-  }
+  explicit ScopedSignals(void (*handler)(int))
+      : old_int_(std::signal(SIGINT, handler)), old_term_(std::signal(SIGTERM, handler)) {}
   ~ScopedSignals() {
     std::signal(SIGINT, old_int_);
     std::signal(SIGTERM, old_term_);
