@@ -1,9 +1,8 @@
 // impactsph ballistic-limit (docs/ballistic-limit.md): bracket the ballistic limit by running the case
-// at several impact speeds at once, fit the Recht-Ipson curve, write CSV/JSON and a gnuplot PNG.
+// at several impact speeds at once, fit the Recht-Ipson curve, write CSV/JSON and a gnuplot PNG. This file:
+// the search and its runs; the reference, the outputs and the fit are in the files ballistic_search.hpp names.
 #include "app/ballistic_limit.hpp"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_multifit_nlinear.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -14,38 +13,32 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
-#include "app/gnuplot.hpp"
+#include "app/ballistic_search.hpp"
 #include "app/picture.hpp"
 #include "app/run_args.hpp"
-#include "common/scoped_signals.hpp"
 #include "app/solver_choice.hpp"
 #include "common/case_file.hpp"
 #include "common/checkpoint.hpp"
 #include "common/driver.hpp"
 #include "common/errors.hpp"
-#include "common/mesh_solid.hpp"
 #include "common/output.hpp"
 #include "common/scene.hpp"
+#include "common/scoped_signals.hpp"
 #include "common/units.hpp"
 
 namespace fs = std::filesystem;
 
 namespace impactsph {
 
-namespace {
+namespace ballistic {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// ---------------------------------------------------------------------------------------------------
 // Formatting
 
 // Impact speeds are run and named to 0.01 m/s, so a folder name, a CSV row and the run agree exactly.
@@ -66,6 +59,12 @@ std::string fixed(double v, int digits) {
   std::snprintf(buf, sizeof buf, "%.*f", digits, v);
   return buf;
 }
+
+}  // namespace ballistic
+
+using namespace ballistic;
+
+namespace {
 
 double parse_speed(const char* option, const std::string& text) {
   try {
@@ -91,173 +90,6 @@ extern "C" void on_search_stop(int sig) {
 }
 
 bool stop_requested() { return g_signals.load() != 0; }
-
-// ---------------------------------------------------------------------------------------------------
-// Reference figures: CASE_DIR/reference.csv with columns v_impact_m_s,v_residual_m_s,source.
-
-struct ReferencePoint {
-  double v_impact = 0, v_residual = 0;
-  std::string source;
-};
-
-struct Reference {
-  fs::path file;
-  std::vector<ReferencePoint> points;
-  std::vector<std::string> sources;  // in order of first appearance
-};
-
-std::vector<std::string> split_csv(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string field;
-  while (std::getline(ss, field, ',')) out.push_back(trim(field));
-  if (!line.empty() && line.back() == ',') out.push_back("");
-  return out;
-}
-
-// Lines starting with '#' and blank lines are skipped; the first other line is the header.
-Reference read_reference(const fs::path& file) {
-  Reference ref;
-  ref.file = file;
-  std::ifstream in(file);
-  if (!in) return ref;
-  auto fail = [&](int line, const std::string& what) {
-    throw std::runtime_error(file.string() + ":" + std::to_string(line) + ": " + what);
-  };
-  int line_no = 0, iv = -1, ir = -1, is = -1;
-  bool header = false;
-  std::string line;
-  while (std::getline(in, line)) {
-    ++line_no;
-    const std::string t = trim(line);
-    if (t.empty() || t[0] == '#') continue;
-    const std::vector<std::string> f = split_csv(t);
-    if (!header) {
-      for (int k = 0; k < static_cast<int>(f.size()); ++k) {
-        if (f[k] == "v_impact_m_s") iv = k;
-        if (f[k] == "v_residual_m_s") ir = k;
-        if (f[k] == "source") is = k;
-      }
-      if (iv < 0 || ir < 0 || is < 0)
-        fail(line_no, "the header must name the columns v_impact_m_s,v_residual_m_s,source (got '" + t + "')");
-      header = true;
-      continue;
-    }
-    if (static_cast<int>(f.size()) <= std::max({iv, ir, is}))
-      fail(line_no, "expected 3 columns v_impact_m_s,v_residual_m_s,source, got '" + t + "'");
-    auto number = [&](int k, const char* column) {
-      char* end = nullptr;
-      const double v = std::strtod(f[k].c_str(), &end);
-      if (f[k].empty() || *end != '\0' || !std::isfinite(v) || v < 0)
-        fail(line_no, std::string(column) + " '" + f[k] + "' is not a speed in m/s (a number >= 0)");
-      return v;
-    };
-    ReferencePoint p;
-    p.v_impact = number(iv, "v_impact_m_s");
-    p.v_residual = number(ir, "v_residual_m_s");
-    p.source = f[is].empty() ? "reference" : f[is];
-    if (std::find(ref.sources.begin(), ref.sources.end(), p.source) == ref.sources.end()) ref.sources.push_back(p.source);
-    ref.points.push_back(p);
-  }
-  return ref;
-}
-
-// ---------------------------------------------------------------------------------------------------
-// The p = 2 Recht-Ipson form of a rigid blunt projectile that pushes out a plug of its own diameter:
-// a = m_p / (m_p + m_plug), from the nominal geometry (the lattice under-fills round bodies).
-
-struct PlugForm {
-  bool ok = false;
-  double m_p = 0, m_plug = 0;  // kg, whole bodies
-  std::string why;             // when not ok
-  double a() const { return m_p / (m_p + m_plug); }
-};
-
-PlugForm plug_form(const CaseSpec& spec) {
-  PlugForm f;
-  const BodySpec& pb = spec.bodies[static_cast<std::size_t>(spec.observables.projectile_index)];
-  const BodySpec& tb = spec.bodies[static_cast<std::size_t>(spec.observables.target_index)];
-  const double speed = norm(pb.velocity);
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (std::abs(pb.velocity[k]) > std::abs(pb.velocity[axis])) axis = k;
-  if (!(speed > 0) || std::abs(pb.velocity[axis]) < 0.999 * speed) {
-    f.why = "the impact is not along a coordinate axis";
-    return f;
-  }
-  // Cross-section normal to the impact axis and extent along it; false when the body lies sideways.
-  auto section = [&](const BodySpec& b, double& area, double& length) {
-    if (b.shape == Shape::Sphere) {
-      // The projectile's cross-section, and the length that gives its volume (4/3 r): the plug of a
-      // sphere is the cylinder of its cross-section through the plate.
-      area = kPi * b.radius * b.radius;
-      length = 4.0 / 3.0 * b.radius;
-      return true;
-    }
-    if (b.shape == Shape::Cylinder) {
-      if (b.axis != axis) return false;
-      area = kPi * b.radius * b.radius;
-      length = shape_volume(b) / area;  // a nose counts by its volume
-      return true;
-    }
-    if (b.shape == Shape::Mesh) {
-      // The extent along the impact axis, and the mean cross-section that gives the mesh's volume.
-      length = b.mesh->upper()[axis] - b.mesh->lower()[axis];
-      area = shape_volume(b) / length;
-      return true;
-    }
-    area = 1;
-    for (int k = 0; k < 3; ++k)
-      if (k != axis) area *= b.box_max[k] - b.box_min[k];
-    length = b.box_max[axis] - b.box_min[axis];
-    return true;
-  };
-  if (tb.shape == Shape::Sphere) {
-    f.why = "the target is a sphere (no plate thickness)";
-    return f;
-  }
-  double area_p, length_p, area_t, thickness;
-  if (!section(pb, area_p, length_p) || !section(tb, area_t, thickness)) {
-    f.why = "a cylinder's axis is not the impact direction";
-    return f;
-  }
-  f.m_p = spec.materials[static_cast<std::size_t>(pb.material_index)].params.eos.rho0 * area_p * length_p;
-  f.m_plug = spec.materials[static_cast<std::size_t>(tb.material_index)].params.eos.rho0 * area_p * thickness;
-  f.ok = f.m_p > 0 && f.m_plug > 0;
-  if (!f.ok) f.why = "a body has no mass";
-  return f;
-}
-
-// ---------------------------------------------------------------------------------------------------
-// Runs
-
-// Where a run's result came from: run here from the start, continued from the checkpoint a stopped
-// search left in its folder, or read from the summary.json of a finished run of the same inputs.
-enum class Origin { Ran, Continued, Reused };
-
-struct Run {
-  double v = 0;  // m/s
-  fs::path dir;
-  Origin origin = Origin::Ran;
-  bool done = false;    // ran to its end (or settled)
-  bool failed = false;  // threw; `error` says why
-  bool diverged = false;
-  std::string error;
-  CaseObservables obs;
-  double wall = 0;  // s, summary.json's wall_time_s (a failed run: its scene build and run)
-  std::string picture_error;  // why its picture files could not be written
-};
-
-struct Search {
-  BallisticOptions opt;
-  CaseSpec spec;           // with the user's overrides, for names and geometry
-  std::string projectile;  // body whose velocity is set
-  fs::path out;
-  int cores = 1, jobs = 1;
-  double v_from = 0, v_to = 0, tolerance = 0;
-  std::vector<Run> runs;  // every run started, in order
-  std::mutex print_mutex;
-};
 
 // The observables of a finished run of the search's solver with this fingerprint in `dir`, if
 // summary.json holds one. `impactsph run` with the same case file, --spacing and --set values (and
@@ -429,420 +261,7 @@ std::vector<Run> run_batch(Search& s, const std::vector<double>& vs) {
   return out;
 }
 
-// ---------------------------------------------------------------------------------------------------
-// Results
-
-struct Outcome {
-  std::string status = "running";  // running, done, interrupted, failed, bad-bracket
-  bool bracketed = false;          // lo and hi are a non-perforating and a perforating run
-  double lo = 0, hi = 0;
-  RechtIpsonFit fit, fit_free;     // v_bl fixed at the estimate; all three free
-  const Reference* reference = nullptr;
-  PlugForm plug;
-  bool reference_curve = false;    // reference p = 2 curve drawn
-  double reference_v_bl = 0;
-  std::string reference_v_bl_from;
-  double reference_rms = -1;       // of the perforating runs against the reference curve
-  double limit() const { return 0.5 * (lo + hi); }
-};
-
-std::vector<const Run*> sorted_done(const Search& s) {
-  std::vector<const Run*> runs;
-  for (const Run& r : s.runs)
-    if (r.done) runs.push_back(&r);
-  std::sort(runs.begin(), runs.end(), [](const Run* a, const Run* b) { return a->v < b->v; });
-  return runs;
-}
-
-nlohmann::json fit_json(const RechtIpsonFit& f, bool v_bl_fixed) {
-  if (!f.ok) return f.message.empty() ? nlohmann::json(nullptr) : nlohmann::json{{"error", f.message}};
-  return {{"a", f.curve.a},           {"p", f.curve.p},       {"v_bl_m_s", f.curve.v_bl},
-          {"v_bl_fixed", v_bl_fixed}, {"rms_m_s", f.rms},     {"points", f.points}};
-}
-
-void write_results(const Search& s, const Outcome& o) {
-  std::string csv = "v_impact_m_s,perforated,residual_velocity_m_s,plug_velocity_m_s,plug_mass_kg,settled_time_s,wall_s\n";
-  for (const Run* r : sorted_done(s)) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "%s,%d,%.6g,%.6g,%.6g,", speed_text(r->v).c_str(), r->obs.perforated ? 1 : 0,
-                  r->obs.residual_velocity, r->obs.plug_velocity, r->obs.plug_mass);
-    csv += buf;
-    if (r->obs.settled_time >= 0) {
-      std::snprintf(buf, sizeof buf, "%.6g", r->obs.settled_time);
-      csv += buf;
-    }
-    std::snprintf(buf, sizeof buf, ",%.3f\n", r->wall);
-    csv += buf;
-  }
-  write_text_atomic(s.out / "ballistic.csv", csv);
-
-  nlohmann::json j;
-  j["case"] = s.spec.name;
-  j["case_file"] = report_path(s.opt.case_file);
-  j["spacing_m"] = s.spec.numerics.spacing;
-  j["set"] = s.opt.sets;
-  j["command_line"] = report_arguments(s.opt.command_line);
-  j["from_m_s"] = s.v_from;
-  j["to_m_s"] = s.v_to;
-  j["tolerance_m_s"] = s.tolerance;
-  j["jobs"] = s.jobs;
-  j["backend"] = s.opt.backend;
-  j["precision"] = s.opt.precision;
-  j["status"] = o.status;
-  j["limit_m_s"] = o.bracketed ? nlohmann::json(o.limit()) : nlohmann::json(nullptr);
-  j["bracket_m_s"] = o.bracketed ? nlohmann::json::array({o.lo, o.hi}) : nlohmann::json(nullptr);
-  j["a"] = o.fit.ok ? nlohmann::json(o.fit.curve.a) : nlohmann::json(nullptr);
-  j["p"] = o.fit.ok ? nlohmann::json(o.fit.curve.p) : nlohmann::json(nullptr);
-  j["recht_ipson"] = fit_json(o.fit, true);
-  j["recht_ipson_free"] = fit_json(o.fit_free, false);
-  if (o.reference_curve) {
-    j["reference"] = {{"file", o.reference->file.string()},
-                      {"v_bl_m_s", o.reference_v_bl},
-                      {"v_bl_from", o.reference_v_bl_from},
-                      {"p", 2.0},
-                      {"a", o.plug.a()},
-                      {"projectile_mass_kg", o.plug.m_p},
-                      {"plug_mass_kg", o.plug.m_plug},
-                      {"rms_of_runs_m_s", o.reference_rms >= 0 ? nlohmann::json(o.reference_rms) : nlohmann::json(nullptr)}};
-  }
-  nlohmann::json runs = nlohmann::json::array();
-  for (const Run& r : s.runs) {
-    const char* origin = r.origin == Origin::Reused ? "reused" : r.origin == Origin::Continued ? "continued" : "ran";
-    nlohmann::json x{{"v_impact_m_s", round_speed(r.v)}, {"dir", r.dir.string()}, {"wall_s", r.wall}, {"origin", origin}};
-    if (r.failed) {
-      x["error"] = r.error;
-    } else if (!r.done) {
-      x["error"] = "stopped before its end";
-    } else {
-      x["perforated"] = r.obs.perforated;
-      x["residual_velocity_m_s"] = r.obs.residual_velocity;
-      x["residual_mass_kg"] = r.obs.residual_mass;
-      x["plug_velocity_m_s"] = r.obs.plug_velocity;
-      x["plug_mass_kg"] = r.obs.plug_mass;
-      x["settled_time_s"] = r.obs.settled_time >= 0 ? nlohmann::json(r.obs.settled_time) : nlohmann::json(nullptr);
-    }
-    runs.push_back(x);
-  }
-  j["runs"] = runs;
-  write_text_atomic(s.out / "ballistic.json", j.dump(2) + "\n");
-}
-
-// ---------------------------------------------------------------------------------------------------
-// The plot (gnuplot, pngcairo)
-
-std::string plot_script(const Search& s, const Outcome& o, const fs::path& png) {
-  const std::vector<const Run*> runs = sorted_done(s);
-  std::vector<double> xs;
-  double y_max = 10;
-  for (const Run* r : runs) {
-    xs.push_back(r->v);
-    if (r->obs.perforated) y_max = std::max(y_max, r->obs.residual_velocity);
-  }
-  if (o.reference)
-    for (const ReferencePoint& p : o.reference->points) {
-      xs.push_back(p.v_impact);
-      y_max = std::max(y_max, p.v_residual);
-    }
-  const double x_lo = *std::min_element(xs.begin(), xs.end()), x_hi = *std::max_element(xs.begin(), xs.end());
-  const double pad = 0.06 * std::max(x_hi - x_lo, 0.2 * x_hi);
-  const double x0 = std::max(0.0, x_lo - pad), x1 = x_hi + pad;
-  if (o.fit.ok) y_max = std::max(y_max, recht_ipson(o.fit.curve, x1));
-  if (o.fit_free.ok) y_max = std::max(y_max, recht_ipson(o.fit_free.curve, x1));
-  if (o.reference_curve) y_max = std::max(y_max, recht_ipson({o.plug.a(), 2, o.reference_v_bl}, x1));
-  y_max *= 1.1;
-
-  std::ostringstream g;
-  g << "# Drawn by impactsph ballistic-limit; run `gnuplot ballistic_curve.gp` in this folder to redraw.\n";
-  g << "set terminal pngcairo size 900,600 enhanced font 'Sans,11'\n";
-  g << "set output " << gp_quote(png.string()) << "\n";
-  char title[256];
-  std::snprintf(title, sizeof title, "%s: ballistic limit %.1f m/s (spacing %s, %zu runs)", s.spec.name.c_str(),
-                o.limit(), format_quantity(s.spec.numerics.spacing, Dimension::Length).c_str(), runs.size());
-  g << "set title " << gp_quote(title) << " noenhanced\n";
-  g << "set xlabel 'impact velocity v_i [m/s]'\nset ylabel 'residual velocity v_r [m/s]'\n";
-  g << "set grid\nset key top left Left reverse box opaque\nset xzeroaxis lt -1\nset samples 1000\n";
-  g << "set xrange [" << gp_number(x0) << ":" << gp_number(x1) << "]\n";
-  g << "set yrange [" << gp_number(-0.04 * y_max) << ":" << gp_number(y_max) << "]\n";
-  // The final bracket, shaded, and the estimate as a dashed line labelled on its left, where v_r = 0 and
-  // no curve runs.
-  g << "set object 1 rect from " << gp_number(o.lo) << ", graph 0 to " << gp_number(o.hi)
-    << ", graph 1 fc rgb '#e4e4e4' fs solid 1.0 noborder behind\n";
-  g << "set arrow 1 from " << gp_number(o.limit()) << ", graph 0 to " << gp_number(o.limit())
-    << ", graph 1 nohead dt 2 lc rgb '#555555'\n";
-  g << "set label 1 " << gp_quote("v_{bl} = " + fixed(o.limit(), 1) + " m/s") << " at " << gp_number(o.limit())
-    << ", graph 0.12 offset -0.8,0 right textcolor rgb '#555555'\n";
-  g << "ri(x, a, p, v) = x > v ? a*(x**p - v**p)**(1.0/p) : 0\n";
-
-  std::ostringstream perf, stopped;
-  for (const Run* r : runs) {
-    if (r->obs.perforated) perf << gp_number(r->v) << " " << gp_number(r->obs.residual_velocity) << "\n";
-    else stopped << gp_number(r->v) << "\n";
-  }
-  std::vector<std::string> plots;
-  if (o.fit.ok) {
-    const RechtIpson& c = o.fit.curve;
-    g << "a1 = " << gp_number(c.a) << "; p1 = " << gp_number(c.p) << "; v1 = " << gp_number(c.v_bl) << "\n";
-    plots.push_back("ri(x, a1, p1, v1) w l lw 2 lc rgb '#1f77b4' t " +
-                    gp_quote("Recht-Ipson fit: a = " + fixed(c.a, 3) + ", p = " + fixed(c.p, 2) + ", v_{bl} = " +
-                             fixed(c.v_bl, 1) + " m/s (fixed)"));
-  }
-  if (o.fit_free.ok) {
-    const RechtIpson& c = o.fit_free.curve;
-    g << "a2 = " << gp_number(c.a) << "; p2 = " << gp_number(c.p) << "; v2 = " << gp_number(c.v_bl) << "\n";
-    plots.push_back("ri(x, a2, p2, v2) w l lw 1.5 dt 2 lc rgb '#ff7f0e' t " +
-                    gp_quote("Recht-Ipson fit, all free: a = " + fixed(c.a, 3) + ", p = " + fixed(c.p, 2) +
-                             ", v_{bl} = " + fixed(c.v_bl, 1) + " m/s"));
-  }
-  if (o.reference_curve) {
-    g << "a3 = " << gp_number(o.plug.a()) << "; v3 = " << gp_number(o.reference_v_bl) << "\n";
-    plots.push_back("ri(x, a3, 2, v3) w l lw 1.5 dt 3 lc rgb '#2ca02c' t " +
-                    gp_quote("reference: p = 2, a = m_p/(m_p+m_{plug}) = " + fixed(o.plug.a(), 3) + ", v_{bl} = " +
-                             fixed(o.reference_v_bl, 1) + " m/s"));
-  }
-  if (!perf.str().empty()) {
-    g << "$perforated << EOD\n" << perf.str() << "EOD\n";
-    plots.push_back("$perforated u 1:2 w p pt 7 ps 1.6 lc rgb '#1f77b4' t 'simulated, perforated'");
-  }
-  if (!stopped.str().empty()) {
-    g << "$stopped << EOD\n" << stopped.str() << "EOD\n";
-    plots.push_back("$stopped u 1:(0) w p pt 6 ps 1.6 lw 2 lc rgb '#d62728' t 'simulated, not perforated'");
-  }
-  if (o.reference) {
-    // One marker per source: experiments as black triangles, other simulations as open shapes.
-    const char* styles[] = {"pt 4 ps 1.6 lw 2 lc rgb '#9467bd'", "pt 12 ps 1.8 lw 2 lc rgb '#8c564b'",
-                            "pt 8 ps 1.6 lw 2 lc rgb '#e377c2'"};
-    int other = 0;
-    for (std::size_t k = 0; k < o.reference->sources.size(); ++k) {
-      const std::string& src = o.reference->sources[k];
-      std::ostringstream d;
-      for (const ReferencePoint& p : o.reference->points)
-        if (p.source == src) d << gp_number(p.v_impact) << " " << gp_number(p.v_residual) << "\n";
-      const std::string block = "$reference" + std::to_string(k);
-      g << block << " << EOD\n" << d.str() << "EOD\n";
-      const std::string style = src == "experiment" ? "pt 9 ps 2 lc rgb 'black'" : styles[other++ % 3];
-      plots.push_back(block + " u 1:2 w p " + style + " t " + gp_quote(src + " (reference.csv)") + " noenhanced");
-    }
-  }
-  g << "plot ";
-  for (std::size_t k = 0; k < plots.size(); ++k) g << (k ? ", \\\n     " : "") << plots[k];
-  g << "\nunset output\n";
-  return g.str();
-}
-
-// Writes DIR/ballistic_curve.gp and draws DIR/ballistic_curve.png with it. Returns an error message, or
-// "" when the PNG is there.
-std::string draw_plot(const Search& s, const Outcome& o) {
-  return draw_gnuplot(s.out / "ballistic_curve.png", s.out / "ballistic_curve.gp",
-                      [&](const fs::path& png) { return plot_script(s, o, png); });
-}
-
-// DIR/report.md: the figures of the search, its plot, its runs, and the pictures at the end of its key
-// runs (the two that bracket the limit and the fastest), drawn here one after another.
-void write_report(const Search& s, const Outcome& o, const std::string& plot_error) {
-  auto num = [](const char* f, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return std::string(buf);
-  };
-  const std::vector<const Run*> runs = sorted_done(s);
-  std::ostringstream md;
-  md << "# Ballistic limit: " << s.spec.name << "\n\n"
-     << "Written by `" << report_command(s.opt.command_line) << "`; the figures are also in ballistic.json and "
-     << "ballistic.csv, each run in its folder v_SPEED/.\n\n"
-     << "| | |\n|---|---|\n"
-     << "| case | `" << report_path(s.opt.case_file) << "` at spacing "
-     << format_quantity(s.spec.numerics.spacing, Dimension::Length) << " |\n"
-     << "| status | " << o.status << " |\n";
-  if (o.bracketed)
-    md << "| bracket | not perforated at " << speed_text(o.lo) << " m/s, perforated at " << speed_text(o.hi)
-       << " m/s (" << runs.size() << " runs) |\n"
-       << "| ballistic limit | " << num("%.1f", o.limit()) << " m/s |\n";
-  if (o.fit.ok)
-    md << "| Recht-Ipson, v_bl fixed | a = " << num("%.4f", o.fit.curve.a) << ", p = " << num("%.3f", o.fit.curve.p)
-       << ", rms residual " << num("%.2f", o.fit.rms) << " m/s over " << o.fit.points << " perforating runs |\n";
-  if (o.fit_free.ok)
-    md << "| Recht-Ipson, all free | a = " << num("%.4f", o.fit_free.curve.a) << ", p = "
-       << num("%.3f", o.fit_free.curve.p) << ", v_bl = " << num("%.1f", o.fit_free.curve.v_bl) << " m/s"
-       << (o.fit_free.message.empty() ? "" : " (" + o.fit_free.message + ")") << " |\n";
-  if (o.reference_curve)
-    md << "| reference | v_bl = " << num("%.1f", o.reference_v_bl) << " m/s (" << o.reference_v_bl_from
-       << "), simulated limit " << num("%+.1f", 100 * (o.limit() - o.reference_v_bl) / o.reference_v_bl) << " % |\n";
-  md << "\n"
-     << (plot_error.empty() ? "![residual velocity against impact velocity](ballistic_curve.png)\n"
-                            : "The plot was not drawn: " + plot_error + "\n")
-     << "\n| impact velocity [m/s] | perforated | residual velocity [m/s] | plug mass [g] | plug velocity [m/s] | "
-        "settled at [us] | wall [s] |\n|---|---|---|---|---|---|---|\n";
-  for (const Run* r : runs)
-    md << "| " << speed_text(r->v) << " | " << (r->obs.perforated ? "yes" : "no") << " | "
-       << num("%.1f", r->obs.residual_velocity) << " | " << num("%.2f", r->obs.plug_mass * 1e3) << " | "
-       << num("%.1f", r->obs.plug_velocity) << " | "
-       << (r->obs.settled_time >= 0 ? num("%.1f", r->obs.settled_time * 1e6) : std::string("not settled")) << " | "
-       << num("%.1f", r->wall) << " |\n";
-
-  std::vector<std::pair<const Run*, std::string>> key;
-  auto add_key = [&](const Run* r, const std::string& why) {
-    if (!r) return;
-    for (auto& k : key)
-      if (k.first == r) {
-        k.second += "; " + why;
-        return;
-      }
-    key.emplace_back(r, why);
-  };
-  auto at = [&](double v) -> const Run* {
-    for (const Run* r : runs)
-      if (r->v == v) return r;
-    return nullptr;
-  };
-  if (o.bracketed) {
-    add_key(at(o.lo), "the fastest that did not perforate");
-    add_key(at(o.hi), "the slowest that perforated");
-  }
-  if (!runs.empty()) add_key(runs.back(), "the fastest run");
-  if (!key.empty() && s.spec.output.picture) {
-    md << "\n## The key runs at their end\n\nA cut through the model coloured by "
-       << picture_field_label(s.spec.output.picture_field)
-       << " (docs/case-files.md, `[output]`); each run folder holds picture.gp and picture.dat to redraw it.\n";
-    for (const auto& [r, why] : key) {
-      const std::string name = r->dir.filename().string();
-      const std::string error = r->picture_error.empty() ? draw_picture(r->dir, "picture") : r->picture_error;
-      md << "\n### " << speed_text(r->v) << " m/s: " << why << "\n\n";
-      if (error.empty())
-        md << "![" << speed_text(r->v) << " m/s at its end](" << name << "/picture.png)\n";
-      else
-        md << "Not drawn: " << error << "\n";
-    }
-  }
-  write_text_atomic(s.out / "report.md", md.str());
-}
-
-// ---------------------------------------------------------------------------------------------------
-// Recht-Ipson fit with GSL. Parameters are fitted as logarithms (a, p and v_bl stay positive) and
-// speeds are scaled by the largest impact speed (a and p do not change, the problem is well scaled).
-
-struct FitData {
-  const std::vector<double>* x;  // v_impact / scale
-  const std::vector<double>* y;  // v_residual / scale
-  RechtIpson fixed;              // scaled v_bl; the values of the parameters not fitted
-  bool free[3];                  // a, p, v_bl
-};
-
-RechtIpson unpack(const gsl_vector* q, const FitData& d) {
-  RechtIpson c = d.fixed;
-  std::size_t k = 0;
-  if (d.free[0]) c.a = std::exp(gsl_vector_get(q, k++));
-  if (d.free[1]) c.p = std::exp(gsl_vector_get(q, k++));
-  if (d.free[2]) c.v_bl = std::exp(gsl_vector_get(q, k++));
-  return c;
-}
-
-// The model and its derivatives along a, p and v_bl at one point.
-void model(const RechtIpson& c, double x, double& g, double deriv[3]) {
-  const double xp = std::pow(x, c.p), bp = std::pow(c.v_bl, c.p), u = xp - bp;
-  if (!(u > 1e-12 * xp)) {  // at or below the limit the curve is 0 and flat
-    g = deriv[0] = deriv[1] = deriv[2] = 0;
-    return;
-  }
-  const double r = std::pow(u, 1.0 / c.p);
-  g = c.a * r;
-  deriv[0] = r;
-  deriv[1] = c.a * r * (-std::log(u) / (c.p * c.p) + (xp * std::log(x) - bp * std::log(c.v_bl)) / (c.p * u));
-  deriv[2] = -c.a * r / u * std::pow(c.v_bl, c.p - 1);
-}
-
-int fit_f(const gsl_vector* q, void* data, gsl_vector* f) {
-  const FitData& d = *static_cast<const FitData*>(data);
-  const RechtIpson c = unpack(q, d);
-  for (std::size_t i = 0; i < d.x->size(); ++i) {
-    double g, deriv[3];
-    model(c, (*d.x)[i], g, deriv);
-    gsl_vector_set(f, i, g - (*d.y)[i]);
-  }
-  return GSL_SUCCESS;
-}
-
-int fit_df(const gsl_vector* q, void* data, gsl_matrix* J) {
-  const FitData& d = *static_cast<const FitData*>(data);
-  const RechtIpson c = unpack(q, d);
-  const double value[3] = {c.a, c.p, c.v_bl};
-  for (std::size_t i = 0; i < d.x->size(); ++i) {
-    double g, deriv[3];
-    model(c, (*d.x)[i], g, deriv);
-    std::size_t k = 0;
-    for (int j = 0; j < 3; ++j)
-      if (d.free[j]) gsl_matrix_set(J, i, k++, deriv[j] * value[j]);  // d/d(log q) = q d/dq
-  }
-  return GSL_SUCCESS;
-}
-
 }  // namespace
-
-double recht_ipson(const RechtIpson& c, double v) {
-  if (!(v > c.v_bl)) return 0;
-  return c.a * std::pow(std::pow(v, c.p) - std::pow(c.v_bl, c.p), 1.0 / c.p);
-}
-
-RechtIpsonFit fit_recht_ipson(const std::vector<double>& v_impact, const std::vector<double>& v_residual,
-                              const RechtIpson& start, bool fit_a, bool fit_p, bool fit_v_bl) {
-  RechtIpsonFit out;
-  out.curve = start;
-  out.points = static_cast<int>(v_impact.size());
-  const std::size_t n = v_impact.size(), k = static_cast<std::size_t>(fit_a) + fit_p + fit_v_bl;
-  if (n < k || k == 0) {
-    out.message = "needs at least " + std::to_string(k) + " perforating runs, has " + std::to_string(n);
-    return out;
-  }
-  if (!(start.a > 0 && start.p > 0 && start.v_bl > 0)) {
-    out.message = "the start values must be positive";
-    return out;
-  }
-  const double scale = *std::max_element(v_impact.begin(), v_impact.end());
-  std::vector<double> x(n), y(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    x[i] = v_impact[i] / scale;
-    y[i] = v_residual[i] / scale;
-  }
-  FitData data{&x, &y, {start.a, start.p, start.v_bl / scale}, {fit_a, fit_p, fit_v_bl}};
-
-  gsl_error_handler_t* old_handler = gsl_set_error_handler_off();  // report failures, do not abort
-  gsl_multifit_nlinear_parameters params = gsl_multifit_nlinear_default_parameters();
-  gsl_multifit_nlinear_workspace* w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &params, n, k);
-  gsl_vector* q0 = gsl_vector_alloc(k);
-  {
-    std::size_t j = 0;
-    if (fit_a) gsl_vector_set(q0, j++, std::log(data.fixed.a));
-    if (fit_p) gsl_vector_set(q0, j++, std::log(data.fixed.p));
-    if (fit_v_bl) gsl_vector_set(q0, j++, std::log(data.fixed.v_bl));
-  }
-  gsl_multifit_nlinear_fdf fdf;
-  fdf.f = fit_f;
-  fdf.df = fit_df;
-  fdf.fvv = nullptr;
-  fdf.n = n;
-  fdf.p = k;
-  fdf.params = &data;
-  int info = 0;
-  int status = gsl_multifit_nlinear_init(q0, &fdf, w);
-  if (status == GSL_SUCCESS) status = gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0.0, nullptr, nullptr, &info, w);
-  // "No progress" at an exact or flat minimum still leaves the best point found.
-  if (status == GSL_SUCCESS || status == GSL_ENOPROG) {
-    RechtIpson c = unpack(gsl_multifit_nlinear_position(w), data);
-    c.v_bl *= scale;
-    double sum = 0;
-    for (std::size_t i = 0; i < n; ++i) sum += std::pow(recht_ipson(c, v_impact[i]) - v_residual[i], 2);
-    out.curve = c;
-    out.rms = std::sqrt(sum / static_cast<double>(n));
-    out.ok = std::isfinite(c.a) && std::isfinite(c.p) && std::isfinite(c.v_bl) && std::isfinite(out.rms);
-    if (!out.ok) out.message = "the fit ran off to infinite parameters";
-    else if (n == k) out.message = "exact: as many runs as parameters";
-  } else {
-    out.message = std::string("the fit did not converge (") + gsl_strerror(status) + ")";
-  }
-  gsl_vector_free(q0);
-  gsl_multifit_nlinear_free(w);
-  gsl_set_error_handler(old_handler);
-  return out;
-}
 
 int ballistic_limit_command(const BallisticOptions& opt) {
   Search s;

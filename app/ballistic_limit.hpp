@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "app/recht_ipson.hpp"
+
 namespace impactsph {
 
 struct BallisticOptions {
@@ -26,24 +28,5 @@ struct BallisticOptions {
 // (--from perforates or --to does not), 130 stopped by Ctrl-C. Throws CaseError or std::runtime_error
 // for bad inputs, before any run starts.
 int ballistic_limit_command(const BallisticOptions& options);
-
-// The Recht-Ipson residual-velocity curve v_r = a (v_i^p - v_bl^p)^(1/p) for v_i > v_bl, else 0.
-struct RechtIpson {
-  double a = 1, p = 2, v_bl = 0;  // v_bl in m/s
-};
-double recht_ipson(const RechtIpson& c, double v_impact);
-
-struct RechtIpsonFit {
-  bool ok = false;
-  RechtIpson curve;
-  double rms = 0;       // m/s, root mean square of the residuals
-  int points = 0;
-  std::string message;  // why it failed, or a remark on the fit
-};
-
-// Least-squares fit (GSL gsl_multifit_nlinear, trust region) of the chosen parameters to the points
-// (v_impact, v_residual) in m/s; the others keep their values in `start`, which also seeds the fit.
-RechtIpsonFit fit_recht_ipson(const std::vector<double>& v_impact, const std::vector<double>& v_residual,
-                              const RechtIpson& start, bool fit_a, bool fit_p, bool fit_v_bl);
 
 }  // namespace impactsph

@@ -20,9 +20,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "app/ballistic_limit.hpp"
 #include "app/gnuplot.hpp"
 #include "app/picture.hpp"
+#include "app/recht_ipson.hpp"
 #include "app/run_args.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
