@@ -11,8 +11,8 @@
 // Every problem throws CaseError naming the file, the line and the key.
 #pragma once
 #include <map>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include "common/units.hpp"
 
@@ -32,14 +32,12 @@ class ExpectedAnswers {
   ExpectedAnswers(std::string file, std::map<std::string, ExpectedFigure> figures)
       : file_(std::move(file)), figures_(std::move(figures)) {}
   const std::string& file() const { return file_; }
-  bool has(const std::string& name) const { return figures_.count(name) > 0; }
   // The figure `name`; throws CaseError listing the figures the file has when it lacks it.
   const ExpectedFigure& figure(const std::string& name) const;
   // Its value in SI, checked to be a `dimension`.
   double value(const std::string& name, Dimension dimension) const;
   // Its tolerance; throws CaseError when the file gives none for it.
   double tolerance(const std::string& name) const;
-  const std::map<std::string, ExpectedFigure>& figures() const { return figures_; }
 
  private:
   std::string file_;

@@ -14,16 +14,21 @@ import tomllib
 UNITS = {"m/s": 1.0, "km/s": 1e3, "g": 1e-3, "kg": 1.0, "mm": 1e-3, "m": 1.0}
 
 
+def cannot_check(message):
+    print(f"check_expected.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
 def si(text, where):
     number, _, unit = text.strip().partition(" ")
     if unit not in UNITS:
-        sys.exit(f"{where}: unit '{unit}' is not one of {', '.join(UNITS)} (check_expected.py)")
+        cannot_check(f"{where}: unit '{unit}' is not one of {', '.join(UNITS)}")
     return float(number) * UNITS[unit]
 
 
 def main(argv):
     if len(argv) < 4:
-        sys.exit(__doc__)
+        cannot_check(__doc__)
     with open(argv[1], "rb") as f:
         expected = tomllib.load(f)
     with open(argv[2]) as f:
@@ -32,7 +37,9 @@ def main(argv):
     for name in argv[3:]:
         where = f"{argv[1]}: {name}"
         if name not in expected or "tolerance" not in expected[name]:
-            sys.exit(f"{where}: needs a table [{name}] with value and tolerance")
+            cannot_check(f"{where}: needs a table [{name}] with value and tolerance")
+        if name not in observables:
+            cannot_check(f"{argv[2]}: observables has no {name}")
         want = si(expected[name]["value"], where)
         tol = float(expected[name]["tolerance"])
         got = float(observables[name])

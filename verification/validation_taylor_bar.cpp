@@ -2,15 +2,15 @@
 // case's own numerics. Targets of issue 19:
 // - cases/taylor-bar, OFHC copper at 190 m/s. The experiment's final length and impact-face diameter with
 //   their targets (cases/taylor-bar/expected.toml; the face by the shifted measure, free of the lattice's
-//   bias), at 0.4 and 0.3 mm and converging (the change from 0.4
-//   to 0.3 mm smaller than from 0.5 to 0.4 mm); the heat share (internal energy gained that is not plastic
-//   work, against the impact energy) below 10 %.
+//   bias), at 0.4 and 0.3 mm and converging (the change from 0.4 to 0.3 mm smaller than from 0.5 to
+//   0.4 mm); the heat share (internal energy gained that is not plastic work, against the impact energy)
+//   below 10 %.
 // - cases/taylor-bar-bilinear, the rate-independent benchmark: final length and foot radius of the
 //   finite-element range with their targets (cases/taylor-bar-bilinear/expected.toml and reference.md)
-//   at all three spacings and converging, peak plastic strain at
-//   least 2.5, and the rim consistency within 10 %: for the outer ring of the bottom lattice layer, the
-//   plastic strain against the hoop log-strain ln(r/r0), which a continuum keeps at 1 or above
-//   (cases/taylor-bar/foot.py, which also gives the non-affinity xi that this test does not assert).
+//   at all three spacings and converging, peak plastic strain at least 2.5, and the rim consistency within
+//   10 %: for the outer ring of the bottom lattice layer, the plastic strain against the hoop log-strain
+//   ln(r/r0), which a continuum keeps at 1 or above (cases/taylor-bar/foot.py, which also gives the
+//   non-affinity xi that this test does not assert).
 // Both: energy drift below 0.5 %. Every figure is printed before it is asserted.
 #include <gtest/gtest.h>
 
