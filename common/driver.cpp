@@ -176,6 +176,9 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
   std::vector<std::string> body_names;
   for (const BodyInfo& b : scene.bodies) body_names.push_back(b.name);
   HistoryWriter history(opt.out_dir, body_names);
+  const bool observing = scene.spec.observables.projectile_index >= 0;
+  ObservableHistory observed(opt.out_dir, observing ? observable_rows(measure_observables(scene, p))
+                                                    : std::vector<ObservableRow>{});
   FrameSeriesWriter frames(opt.out_dir, "particles");
 
   RunResult result;
@@ -192,6 +195,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
     p = std::move(data.particles);
     clock = data.clock;
     history.load_existing(clock.time);
+    if (observing) observed.load_existing(clock.time);
     frames.truncate_after(clock.frame);
   } else {
     frames.truncate_after(0);  // a fresh run into an existing folder starts a new series
@@ -241,10 +245,15 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
         throw DivergenceError("total energy grew from " + std::to_string(e0) + " J to " + std::to_string(e) +
                               " J at t = " + format_seconds(clock.time) +
                               ": the run is unstable; try a smaller numerics.cfl");
-      if (scene.spec.observables.projectile_index >= 0) {
-        const CaseObservables o = measure_observables(scene, p);
+      if (observing) {
+        CaseObservables o = measure_observables(scene, p);
         track_settling(scene.spec.observables, clock.time, o.residual_velocity, clock);
         impact_over = clock.settled_time >= 0 && impact_is_over(scene.spec.observables, o);
+        if (scene.spec.output.csv) {
+          o.settled_time = clock.settled_time;
+          observed.append(clock.time, observable_rows(o));
+          observed.flush();
+        }
       }
     }
     if (frame) {

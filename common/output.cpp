@@ -15,6 +15,8 @@
 #include <system_error>
 #include <type_traits>
 
+#include "common/case_observables.hpp"
+
 namespace impactsph {
 
 namespace fs = std::filesystem;
@@ -313,12 +315,11 @@ void FrameSeriesWriter::truncate_after(std::int64_t next_index) {
 
 namespace {
 
-template <std::size_t N>
-std::string csv_text(const char* header, const std::vector<std::array<double, N>>& rows) {
+std::string csv_text(const std::string& header, const std::vector<std::vector<double>>& rows) {
   std::string s = header;
   s += '\n';
   for (const auto& row : rows) {
-    for (std::size_t c = 0; c < N; ++c) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
       if (c > 0) s += ',';
       s += format_double(row[c]);
     }
@@ -327,10 +328,11 @@ std::string csv_text(const char* header, const std::vector<std::array<double, N>
   return s;
 }
 
-// Rows of an existing history with time <= up_to_time; a missing file has none.
-template <std::size_t N>
-std::vector<std::array<double, N>> read_csv(const fs::path& path, const char* header, double up_to_time) {
-  std::vector<std::array<double, N>> rows;
+// Rows of an existing history with time <= up_to_time (`columns` numbers each, the time first); a missing
+// file has none.
+std::vector<std::vector<double>> read_csv(const fs::path& path, const std::string& header, std::size_t columns,
+                                          double up_to_time) {
+  std::vector<std::vector<double>> rows;
   if (!fs::exists(path)) return rows;
   std::istringstream in(read_file(path));
   std::string line;
@@ -345,22 +347,22 @@ std::vector<std::array<double, N>> read_csv(const fs::path& path, const char* he
       continue;
     }
     if (line.empty()) continue;
-    std::array<double, N> row{};
+    std::vector<double> row(columns, 0.0);
     std::size_t column = 0;
     std::size_t start = 0;
     bool ok = true;
     while (ok) {
       const std::size_t comma = line.find(',', start);
       const std::string cell = line.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-      ok = column < N && parse_double(cell, row[column]);
+      ok = column < columns && parse_double(cell, row[column]);
       ++column;
       if (comma == std::string::npos) break;
       start = comma + 1;
     }
-    if (!ok || column != N)
-      throw std::runtime_error(path.string() + ":" + std::to_string(line_number) + ": expected " + std::to_string(N) +
-                               " comma-separated numbers, got '" + line + "'");
-    if (row[0] <= limit) rows.push_back(row);
+    if (!ok || column != columns)
+      throw std::runtime_error(path.string() + ":" + std::to_string(line_number) + ": expected " +
+                               std::to_string(columns) + " comma-separated numbers, got '" + line + "'");
+    if (row[0] <= limit) rows.push_back(std::move(row));
   }
   if (line_number == 0) throw std::runtime_error(path.string() + ": empty file, expected the header '" + header + "'");
   return rows;
@@ -387,8 +389,8 @@ fs::path HistoryWriter::totals_path() const { return dir_ / "totals.csv"; }
 
 void HistoryWriter::load_existing(double up_to_time) {
   for (std::size_t b = 0; b < body_rows_.size(); ++b)
-    body_rows_[b] = read_csv<kBodyColumns>(body_path(b), kBodyHeader, up_to_time);
-  totals_rows_ = read_csv<kTotalsColumns>(totals_path(), kTotalsHeader, up_to_time);
+    body_rows_[b] = read_csv(body_path(b), kBodyHeader, kBodyColumns, up_to_time);
+  totals_rows_ = read_csv(totals_path(), kTotalsHeader, kTotalsColumns, up_to_time);
 }
 
 void HistoryWriter::append(double time, const std::vector<BodySummary>& bodies, const Totals& totals) {
@@ -409,5 +411,32 @@ void HistoryWriter::flush() const {
     write_text_atomic(body_path(b), csv_text(kBodyHeader, body_rows_[b]));
   write_text_atomic(totals_path(), csv_text(kTotalsHeader, totals_rows_));
 }
+
+// ---------------------------------------------------------------------------------------------------
+// ObservableHistory
+
+ObservableHistory::ObservableHistory(fs::path dir, const std::vector<ObservableRow>& shape)
+    : path_(std::move(dir) / "observables.csv"), header_("time_s") {
+  for (const ObservableRow& row : shape) {
+    std::string unit = row.unit;
+    std::replace(unit.begin(), unit.end(), '/', '_');
+    header_ += "," + row.name + (unit.empty() ? "" : "_" + unit);
+  }
+  columns_ = shape.size() + 1;
+}
+
+void ObservableHistory::load_existing(double up_to_time) { rows_ = read_csv(path_, header_, columns_, up_to_time); }
+
+void ObservableHistory::append(double time, const std::vector<ObservableRow>& rows) {
+  if (rows.size() + 1 != columns_)
+    throw std::invalid_argument("observables.csv has " + std::to_string(columns_ - 1) + " observables, got " +
+                                std::to_string(rows.size()));
+  std::vector<double> line{time};
+  for (const ObservableRow& row : rows)
+    line.push_back(row.kind == ObservableRow::Kind::TimeOrNever && row.value < 0 ? -1.0 : row.value * row.scale);
+  rows_.push_back(std::move(line));
+}
+
+void ObservableHistory::flush() const { write_text_atomic(path_, csv_text(header_, rows_)); }
 
 }  // namespace impactsph

@@ -14,6 +14,8 @@
 
 namespace impactsph {
 
+struct ObservableRow;  // common/case_observables.hpp
+
 // Write `content` to `path` via `path.tmp-<pid>` in the same directory: write, fsync, rename. Throws
 // std::runtime_error naming the path and the system's reason on failure; the target is then untouched.
 void write_text_atomic(const std::filesystem::path& path, const std::string& content);
@@ -89,8 +91,35 @@ class HistoryWriter {
 
   std::filesystem::path dir_;
   std::vector<std::string> file_stems_;
-  std::vector<std::vector<std::array<double, kBodyColumns>>> body_rows_;  // [body][row]
-  std::vector<std::array<double, kTotalsColumns>> totals_rows_;
+  std::vector<std::vector<std::vector<double>>> body_rows_;  // [body][row][column]
+  std::vector<std::vector<double>> totals_rows_;
+};
+
+// `dir/observables.csv`: the case's observables (observable_rows, common/case_observables.hpp) at every
+// history row, in the units they are printed in (columns `plug_mass_g`, `residual_velocity_m_s`, ...; a
+// time not reached yet, as settled_time_us, is -1): when the plug came off, how the residual velocity
+// settled. Kept and rewritten whole as HistoryWriter does.
+class ObservableHistory {
+ public:
+  // `shape`: the rows the case's observables produce (their names and units make the header).
+  ObservableHistory(std::filesystem::path dir, const std::vector<ObservableRow>& shape);
+
+  // Restart: the rows of the existing file with time <= up_to_time; a missing file gives none, a file with
+  // another header or a malformed row throws std::runtime_error naming the file and line.
+  void load_existing(double up_to_time);
+  // Throws std::invalid_argument when `rows` has another length than the shape.
+  void append(double time, const std::vector<ObservableRow>& rows);
+  void flush() const;
+
+  const std::string& header() const { return header_; }
+  std::size_t rows() const { return rows_.size(); }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+  std::string header_;
+  std::size_t columns_ = 1;
+  std::vector<std::vector<double>> rows_;
 };
 
 }  // namespace impactsph

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common/case_observables.hpp"
 #include "common/output.hpp"
 #include "tests/temp_dir_test.hpp"
 
@@ -296,6 +297,41 @@ TEST_F(OutputTest, HistoryWritesCsvAndReloadsUpToRestartTime) {
   EXPECT_EQ(after[4].substr(0, 8), "2.5e-06,");
   EXPECT_EQ(lines_of(slurp(dir_ / "history_plate_1.csv")).size(), 5u);
   for (const std::string& name : listing()) EXPECT_EQ(name.find(".tmp-"), std::string::npos) << name;
+}
+
+// observables.csv: the header from the rows' names and printed units, values in those units, and a restart
+// keeps the rows up to its time.
+TEST_F(OutputTest, ObservableHistoryWritesRowsInPrintedUnitsAndRestarts) {
+  CaseObservables o;
+  o.projectile = o.target = true;
+  ObservableHistory observed(dir_, observable_rows(o));
+  EXPECT_EQ(observed.header(),
+            "time_s,residual_velocity_m_s,residual_mass_g,eroded_mass_g,settled_time_us,plug_velocity_m_s,plug_mass_g,"
+            "perforated,damage_fraction");
+  for (int k = 0; k < 3; ++k) {
+    o.residual_velocity = 100.0 - k;
+    o.plug_mass = 0.001 * k;
+    o.perforated = k == 2;
+    o.settled_time = k == 2 ? 2e-6 : -1;
+    observed.append(1e-6 * k, observable_rows(o));
+  }
+  observed.flush();
+  const auto lines = lines_of(slurp(dir_ / "observables.csv"));
+  ASSERT_EQ(lines.size(), 4u);
+  EXPECT_EQ(lines[0], observed.header());
+  EXPECT_EQ(lines[1], "0,100,0,0,-1,0,0,0,0");
+  EXPECT_EQ(lines[3], "2e-06,98,0,0,2,0,2,1,0");
+
+  ObservableHistory restarted(dir_, observable_rows(o));
+  restarted.load_existing(1e-6);
+  EXPECT_EQ(restarted.rows(), 2u);
+  EXPECT_THROW(restarted.append(3e-6, {}), std::invalid_argument);
+
+  CaseObservables bar;
+  bar.taylor_bar = true;
+  ObservableHistory other(dir_, observable_rows(bar));
+  const std::string message = error_of([&] { other.load_existing(1.0); });
+  EXPECT_NE(message.find("observables.csv:1: unexpected header"), std::string::npos) << message;
 }
 
 TEST_F(OutputTest, HistoryReportsMalformedFilesAndNameClashes) {
