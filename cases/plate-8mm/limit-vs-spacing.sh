@@ -1,43 +1,60 @@
 #!/usr/bin/env bash
-# The 8 mm plate's ballistic limit against the particle spacing, for the Weldox material file's failure
+# A plate's ballistic limit against the particle spacing, for the Weldox material file's failure
 # criterion (the crack band, cases/materials/weldox-460e.toml) and for F's critical plastic strain 0.3
 # (F eq 4.9), and with no failure at all (`no-damage`: the limit the plate's SPH discretisation gives when
 # no particle fails, which bounds what any failure constant can reach). A model name ending in `-as` runs
 # the same with the artificial stress against the tensile instability (numerics.artificial_stress = 0.3,
 # deviatoric form; common/artificial_stress.hpp). One `impactsph ballistic-limit`
 # search per criterion and spacing, then
-# cases/plate-8mm/report-limit-vs-spacing/report.md and limit_vs_spacing.png (the limit against the
-# spacing, the experiment's 152.5 m/s as a line with its +-3 % band) from the searches' ballistic.json
-# files: nothing typed in.
+# cases/PLATE/report-limit-vs-spacing/report.md and limit_vs_spacing.png (the limit against the
+# spacing, the experiment's limit from cases/PLATE/expected.toml as a line with its +-3 % band where the
+# case has one) from the searches' ballistic.json files: nothing typed in.
 #
 #   bash cases/plate-8mm/limit-vs-spacing.sh            # run the searches that are missing, then report
 #   REPORT_ONLY=1 bash cases/plate-8mm/limit-vs-spacing.sh
+#   PLATE=plate-12mm bash cases/plate-8mm/limit-vs-spacing.sh   # the 12 mm plate from its committed searches
 #
-# Environment: BUILD_DIR (default build), RUNS (default runs/limit-vs-spacing), OUT (the report's folder,
-# default cases/plate-8mm/report-limit-vs-spacing), CALIBRATION (default
+# Environment: PLATE (the case folder, default plate-8mm), BUILD_DIR (default build), RUNS (default
+# runs/limit-vs-spacing for the 8 mm plate, runs/limit-vs-spacing-PLATE otherwise), OUT (the report's
+# folder, default cases/PLATE/report-limit-vs-spacing), CALIBRATION (default
 # runs/weldox-calibration-*: the folders of the material file's calibration command, tabulated when
 # present), BRACKET_RUNS (limits from runs made by hand, "model:DIR,DIR" per word: the highest speed
-# that held and the lowest that perforated), SEARCHES (default below:
-# "criterion spacing_mm from_m_s to_m_s tolerance_m_s" per line), JOBS (default 2). A search whose
-# ballistic.json exists is not run again (delete its folder, or give RUNS a new name after changing the
-# code). A 2 mm search takes a few minutes on two cores, a 1.333 mm one about half an hour; at 1 mm the
-# calibration command of the material file is the search (about 25 minutes a round).
+# that held and the lowest that perforated), SEARCH_FILES (searches made before, "model:PATH" per word,
+# PATH a ballistic.json: the 12 mm plate's default is its committed reports), SEARCHES (default below:
+# "criterion spacing_mm from_m_s to_m_s tolerance_m_s" per line; none for the 12 mm plate), JOBS
+# (default 2). A search whose ballistic.json exists is not run again (delete its folder, or give RUNS a
+# new name after changing the code). A 2 mm search of the 8 mm plate takes a few minutes on two cores, a
+# 1.333 mm one about half an hour; at 1 mm the calibration command of the material file is the search
+# (about 25 minutes a round).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${BUILD_DIR:-build}
-RUNS=${RUNS:-runs/limit-vs-spacing}
 JOBS=${JOBS:-2}
 EXE=$BUILD_DIR/impactsph
-CASE=cases/plate-8mm/case.toml
-OUT=${OUT:-cases/plate-8mm/report-limit-vs-spacing}
+PLATE=${PLATE:-plate-8mm}
+CASE=cases/$PLATE/case.toml
+[[ -f "$CASE" ]] || { echo "limit-vs-spacing: no $CASE (PLATE names a folder of cases/)" >&2; exit 2; }
+OUT=${OUT:-cases/$PLATE/report-limit-vs-spacing}
 ARTIFICIAL_STRESS='numerics.artificial_stress=0.3'
 F49='weldox-460e.damage={ kind = "critical-plastic-strain", critical_plastic_strain = 0.3 }'
 NO_DAMAGE='weldox-460e.damage={ kind = "none" }'
-SEARCHES=${SEARCHES:-"fracture-energy 2 100 190 3
+if [[ "$PLATE" == plate-8mm ]]; then
+  RUNS=${RUNS:-runs/limit-vs-spacing}
+  SEARCHES=${SEARCHES-"fracture-energy 2 100 190 3
 critical-strain 2 100 190 3
 no-damage 2 150 195 3
 fracture-energy 1.333 100 190 3
 no-damage 1.333 120 190 3"}
+  SEARCH_FILES=${SEARCH_FILES:-}
+else
+  RUNS=${RUNS:-runs/limit-vs-spacing-$PLATE}
+  SEARCHES=${SEARCHES:-}
+fi
+if [[ "$PLATE" == plate-12mm ]]; then
+  SEARCH_FILES=${SEARCH_FILES-"fracture-energy:cases/plate-12mm/report-2mm-crack-band/ballistic.json
+fracture-energy:cases/plate-12mm/report-1mm-crack-band/ballistic.json
+critical-strain-78523bb:cases/plate-12mm/report-2mm/ballistic.json"}
+fi
 CALIBRATION=${CALIBRATION:-runs/weldox-calibration-*}
 mkdir -p "$RUNS" "$OUT"
 
@@ -58,16 +75,33 @@ if [[ -z "${REPORT_ONLY:-}" ]]; then
 fi
 
 COMMAND="bash cases/plate-8mm/limit-vs-spacing.sh"
-[[ "$OUT" != cases/plate-8mm/report-limit-vs-spacing ]] && COMMAND="OUT=$OUT RUNS=$RUNS SEARCHES=... $COMMAND"
+[[ "$PLATE" != plate-8mm ]] && COMMAND="PLATE=$PLATE $COMMAND"
+[[ "$OUT" != "cases/$PLATE/report-limit-vs-spacing" ]] && COMMAND="OUT=$OUT RUNS=$RUNS SEARCHES=... $COMMAND"
 [[ -n "${BRACKET_RUNS:-}" ]] && COMMAND="BRACKET_RUNS=\"$BRACKET_RUNS\" $COMMAND"
-COMMAND="$COMMAND" python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" "$CALIBRATION" <<'PY'
-import glob, json, os, shlex, subprocess, sys
+COMMAND="$COMMAND" SEARCH_FILES="${SEARCH_FILES:-}" python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" \
+  "$CALIBRATION" "$PLATE" <<'PY'
+import glob, json, os, shlex, subprocess, sys, tomllib
 sys.path.insert(0, 'cases/plate-8mm')
 from plate_runs import read_run, recht_ipson_p2_limit
 
-runs, out, commit, calibration = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
-experiment = 152.5  # m/s, F's ballistic limit of the 8 mm plate (the validation data)
+runs, out, commit, calibration, plate = sys.argv[1:6]
+# The experiment's ballistic limit (m/s) where the case states one in its expected.toml, else None.
+experiment = None
+expected_file = os.path.join('cases', plate, 'expected.toml')
+if os.path.isfile(expected_file):
+    value = tomllib.load(open(expected_file, 'rb')).get('ballistic_limit', {}).get('value')
+    if value:
+        number, unit = value.split()
+        if unit != 'm/s':
+            sys.exit('limit-vs-spacing: %s: ballistic_limit.value "%s": expected a speed in m/s' % (expected_file, value))
+        experiment = float(number)
+title_plate = plate.replace('plate-', '').replace('mm', ' mm')
 rows = []
+for item in os.environ.get('SEARCH_FILES', '').split():
+    model, path = item.split(':', 1)
+    b = json.load(open(path))
+    b['report'] = os.path.dirname(path)
+    rows.append((model, b['spacing_m'] * 1e3, b, sum(r.get('wall_s', 0.0) for r in b['runs'])))
 for name in sorted(os.listdir(runs)):
     path = os.path.join(runs, name, 'ballistic.json')
     if not os.path.isfile(path):
@@ -99,24 +133,34 @@ for item in os.environ.get('BRACKET_RUNS', '').split():
                        else 'verdicts not monotonic')
     rows.append((model, b['spacing_m'] * 1e3, b, sum(r['wall_s'] for r in b['runs'])))
 rows.sort(key=lambda r: (r[0], -r[1]))
+if not rows:
+    sys.exit('limit-vs-spacing: no searches in %s and none in SEARCH_FILES: nothing to report' % runs)
 
 def recht_ipson_p2(b):
     """v_bl of the p = 2 Recht-Ipson curve through the search's two slowest perforating runs (m/s), or None."""
     return recht_ipson_p2_limit([(r['v_impact_m_s'], r['residual_velocity_m_s']) for r in b['runs'] if r.get('perforated')])
 
-lines = ['# 8 mm plate: the ballistic limit against the spacing', '',
+against = 'against %.1f m/s' % experiment if experiment else 'against the experiment'
+lines = ['# %s plate: the ballistic limit against the spacing' % title_plate, '',
          'Generated by `%s` at commit %s from the searches in %s '
          '(`impactsph ballistic-limit`, one per criterion and spacing; each search\'s command line is below the '
          'table). `fracture-energy` is the crack-band criterion of cases/materials/weldox-460e.toml, '
          '`critical-strain` F\'s eq 4.9 with eps_c = 0.3 set over it, `no-damage` no failure model at all; a name ending in '
          '`-as` is the same with the artificial stress (`numerics.artificial_stress=0.3`), which the case file has '
-         'set by default since the fracture energy was calibrated under it. The experiment: %.1f m/s.' % (os.environ['COMMAND'], commit, runs, experiment),
+         'set by default since the fracture energy was calibrated under it. A search taken from a report (SEARCH_FILES) names '
+         'its report after its command line; a name ending in a commit was run with the code of that commit, before '
+         'the crack band and the artificial stress. %s' % (os.environ['COMMAND'], commit, runs,
+         'The experiment: %.1f m/s (%s).' % (experiment, expected_file) if experiment else
+         'The case states no experimental ballistic limit (%s has none): the limits are a prediction.' % expected_file),
          '', '![limit against spacing](limit_vs_spacing.png)', '',
-         '| criterion | spacing | limit | bracket | against 152.5 m/s | Recht-Ipson p = 2 through the two slowest perforating runs | runs | wall s (sum of runs) |',
+         '| criterion | spacing | limit | bracket | %s | Recht-Ipson p = 2 through the two slowest perforating runs | runs | wall s (sum of runs) |',
          '|---|---|---|---|---|---|---|---|']
+lines[-2] = lines[-2] % against
+def relative(v):
+    return '%+.1f %%' % (100 * (v / experiment - 1)) if experiment else ''
 def estimate_cell(b):
     e = recht_ipson_p2(b)
-    return '%.1f m/s (%+.1f %%)' % (e, 100 * (e / experiment - 1)) if e else ''
+    return ('%.1f m/s (%s)' % (e, relative(e)) if experiment else '%.1f m/s' % e) if e else ''
 for model, s, b, wall in rows:
     if b.get('limit_m_s') is None:
         lines.append('| %s | %.3g mm | not bracketed (%s) | | | %s | %d | %.0f |' % (
@@ -124,8 +168,8 @@ for model, s, b, wall in rows:
         continue
     lo, hi = b['bracket_m_s']
     unfinished = '' if b.get('status') == 'done' else ' (search %s: the bracket so far)' % b.get('status')
-    lines.append('| %s | %.3g mm | %.1f m/s%s | %.2f-%.2f m/s | %+.1f %% | %s | %d | %.0f |' % (
-        model, s, b['limit_m_s'], unfinished, lo, hi, 100 * (b['limit_m_s'] / experiment - 1), estimate_cell(b),
+    lines.append('| %s | %.3g mm | %.1f m/s%s | %.2f-%.2f m/s | %s | %s | %d | %.0f |' % (
+        model, s, b['limit_m_s'], unfinished, lo, hi, relative(b['limit_m_s']), estimate_cell(b),
         len(b['runs']), wall))
 lines += ['', 'Perforating runs (impact speed: residual velocity; plug mass and speed):', '']
 for model, s, b, wall in rows:
@@ -137,7 +181,7 @@ for model, s, b, wall in rows:
 lines += ['', 'Searches:', '']
 for model, s, b, wall in rows:
     cl = b['command_line'] if isinstance(b['command_line'], str) else shlex.join(b['command_line'])
-    lines.append('- %s at %.3g mm: `%s`' % (model, s, cl))
+    lines.append('- %s at %.3g mm: `%s`%s' % (model, s, cl, ' (report: %s)' % b['report'] if 'report' in b else ''))
 cal = sorted(glob.glob(os.path.join(calibration, 'ballistic.json')))
 if cal:
     lines += ['', 'The calibration command of cases/materials/weldox-460e.toml (1 mm, 149.5 and 155.5 m/s) at the '
@@ -168,8 +212,12 @@ with open(data, 'w') as f:
                 f.write('%.4f %.3f\n' % (s, recht_ipson_p2(b)))
         f.write('\n\n')
 models = sorted({r[0] for r in rows})
-plots = ['%.1f*0.97 with filledcurves y1=%.1f*1.03 fc rgb "#dddddd" title "experiment +-3 %%"' % (experiment, experiment),
-         '%.1f with lines dt 2 lc rgb "black" title "experiment %.1f m/s"' % (experiment, experiment)]
+plots = []
+if experiment:
+    plots = ['%.1f*0.97 with filledcurves y1=%.1f*1.03 fc rgb "#dddddd" title "experiment +-3 %%"' % (experiment, experiment),
+             '%.1f with lines dt 2 lc rgb "black" title "experiment %.1f m/s"' % (experiment, experiment)]
+limits = [b['limit_m_s'] for m, s, b, wall in rows if b.get('limit_m_s')] + ([experiment] if experiment else [])
+low, high = 20 * int(min(limits) / 20 - 1), 20 * int(max(limits) / 20 + 2)
 for k, model in enumerate(models):
     plots.append('"%s" index %d using 1:2:3:4 with yerrorlines pt 7 lc %d title "%s"' % (os.path.basename(data), k, k + 1, model))
     plots.append('"%s" index %d using 1:2 with points pt 6 ps 1.5 lc %d title "%s, Recht-Ipson p = 2 estimate"' % (
@@ -178,8 +226,8 @@ script = '\n'.join([
     'set terminal pngcairo size 800,560',
     'set output "limit_vs_spacing.png"',
     'set xlabel "particle spacing [mm]"', 'set ylabel "ballistic limit [m/s]"',
-    'set title "8 mm Weldox 460 E plate, 197 g blunt projectile"',
-    'set xrange [0:2.2]', 'set yrange [100:200]', 'set key bottom left', 'set grid',
+    'set title "%s Weldox 460 E plate, 197 g blunt projectile"' % title_plate,
+    'set xrange [0:2.2]', 'set yrange [%d:%d]' % (low, high), 'set key bottom left', 'set grid',
     'plot ' + ', '.join(plots)]) + '\n'
 open(os.path.join(out, 'limit_vs_spacing.gp'), 'w').write(script)
 try:
