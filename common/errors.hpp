@@ -1,6 +1,7 @@
 // Errors a user can act on (host only). A CaseError names the file, the line (0 when unknown), the key
 // and says what would be valid; the CLI prints it as `file:line: key: message` and exits with status 2.
 #pragma once
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -33,5 +34,19 @@ class DivergenceError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// The error of a step that left particle `index` (its index in the scene, of body `body`) with a non-finite
+// state or a non-positive density: its position (m), velocity (m/s), density (kg/m^3), specific energy
+// (J/kg) and von Mises stress (Pa), and what to try. Both solvers throw it (state_is_finite, stages.hpp).
+inline DivergenceError particle_diverged(double dt, long long index, const std::string& body, const double (&x)[3],
+                                         const double (&v)[3], double rho, double energy, double von_mises) {
+  std::ostringstream msg;
+  msg.precision(6);
+  msg << "the solution diverged in the step of dt = " << dt << " s at particle " << index << " of body '" << body
+      << "': position (" << x[0] << ", " << x[1] << ", " << x[2] << ") m, velocity (" << v[0] << ", " << v[1] << ", "
+      << v[2] << ") m/s, density " << rho << " kg/m^3, specific energy " << energy << " J/kg, von Mises " << von_mises
+      << " Pa. Try a smaller numerics.cfl or larger viscosity coefficients.";
+  return DivergenceError(msg.str());
+}
 
 }  // namespace impactsph

@@ -3,7 +3,8 @@
 // Thrust CUDA system: radix sort, scans and reductions on the device).
 //
 // A step is the reference's (reference/solver.hpp): explicit midpoint, each evaluation = mirror ghosts,
-// EOS, pass 1, stress rate, pass 2; every formula is a common/ function. What differs is the loop shape:
+// EOS, pass 1, stress rate, pass 2; what a point or a pair computes is a stage of common/stages.hpp, the
+// same functions the reference calls. What differs is the storage and the loop shape:
 //   * storage: structure of arrays in device memory, one array per field; the real particles are kept in
 //     the order of their cells (re-sorted when they have moved enough), and `original` maps back;
 //   * neighbours: all points (reals and symmetry ghosts) sorted by cell key (stable radix sort), cell
@@ -32,16 +33,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <vector>
 
-#include "common/contact.hpp"
 #include "common/errors.hpp"
-#include "common/integration.hpp"
-#include "common/kernels.hpp"
-#include "common/pair_terms.hpp"
-#include "common/smoothing_length.hpp"
-#include "common/timestep.hpp"
+#include "common/stage_setup.hpp"
+#include "common/stages.hpp"
 #include "common/verlet.hpp"
 #include "gpu/launch.hpp"
 #include "gpu/solver.hpp"
@@ -50,13 +46,6 @@ namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND {
 
 template <class T> using DVec = thrust::device_vector<T>;
 template <class T> T* raw(DVec<T>& v) { return thrust::raw_pointer_cast(v.data()); }
-
-using Vec3p = Vec3<double>;  // positions, m, double in both precisions
-constexpr int kMaxPlanes = 6;
-
-template <class To, class From> IMPACTSPH_HD Vec3<To> cast3(Vec3<From> a) {
-  return {static_cast<To>(a.x), static_cast<To>(a.y), static_cast<To>(a.z)};
-}
 
 // Cells of half the search radius in a box; key = (cz dy + cy) dx + cx, so the cells along x are
 // contiguous and a row of five cells is one range of sorted points.
@@ -138,72 +127,6 @@ template <class Real> IMPACTSPH_HD GradientSums<Real> unflatten_gradient_sums(co
     }
   g.grad_rho = Vec3<Real>{sum[27], sum[28], sum[29]};
   return g;
-}
-
-struct Plane {
-  int axis;
-  double position;  // m
-  double side;      // +1 or -1: the side the model lies on
-  bool wall;        // pushes but does not pull (lets_go_of_wall, common/integration.hpp)
-};
-
-// How two bodies interact: shared SPH sums (penalty = 0) or penalty contact (F 4.1-4.6).
-template <class Real>
-struct PairContact {
-  int penalty;
-  Real scale;     // K_p
-  Real distance;  // contact distance, m (when srad is 0)
-  Real srad;      // > 0: the particles touch at srad (h_i + h_j)/2 instead (X eqs 18, 20)
-  IMPACTSPH_HD Real touch(Real h_i, Real h_j) const { return contact_touch_distance(srad, distance, h_i, h_j); }
-};
-
-// Variable smoothing length of a body (X eqs 9-10): on or off, and the bounds of h (m).
-template <class Real>
-struct BodySmoothing {
-  int variable;
-  Real h_lo, h_hi;
-};
-
-template <class Real>
-struct Params {
-  KernelKind kernel;
-  ViscosityParams<Real> visc;
-  CorrectionParams<Real> correction;
-  Real delta;
-  Real cfl;
-  bool balsara;
-  BulkViscosityParams<Real> bulk;  // volumetric viscosity in compression (common/viscosity.hpp)
-  bool bulk_on;
-  ArtificialStressParams<Real> art;  // artificial stress against the tensile instability (common/artificial_stress.hpp)
-  int body_count;
-  int plane_count;
-  Plane planes[kMaxPlanes];
-  unsigned wall_planes;  // bit k: plane k is a wall
-};
-
-// Mirror image of a point through the planes of `mask`, taken in plane order as the reference does
-// (each plane mirrors the reals and the images made so far): exists when the point, as mirrored so far,
-// lies within `margin` of each plane it is mirrored in. x' = sign x + shift per axis.
-IMPACTSPH_HD bool mirror_image(const Plane* planes, int plane_count, int mask, Vec3p x, double margin,
-                                          Vec3p& sign, Vec3p& shift) {
-  sign = Vec3p{1, 1, 1};
-  shift = Vec3p{0, 0, 0};
-  for (int k = 0; k < plane_count; ++k)
-    if ((mask & (1 << k)) && !mirror_through_plane(sign, shift, x, planes[k].axis, planes[k].position, margin))
-      return false;
-  return true;
-}
-
-// The walls (bit k for plane k) that a particle with deviatoric stress S and pressure P lets go of
-// (lets_go_of_wall, common/integration.hpp).
-template <class Real>
-IMPACTSPH_HD unsigned walls_let_go(const Plane* planes, int plane_count, const Sym3<Real>& S, Real P,
-                                       const Vec3<Real>& v) {
-  unsigned let_go = 0;
-  for (int k = 0; k < plane_count; ++k)
-    if (planes[k].wall && lets_go_of_wall(S, P, v, planes[k].axis, static_cast<Real>(planes[k].side)))
-      let_go |= 1u << k;
-  return let_go;
 }
 
 // Wall time of the phases of a step: CUDA events on the device, the steady clock on the host.
@@ -300,56 +223,16 @@ class Solver final : public GpuStepper {
     const bool dbl = sizeof(Real) == sizeof(double);
     name_ = std::string("gpu port (") + (dbl ? "double" : "float") + ", " + build + ")";
     for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
-    if (scene.spec.symmetry.size() > static_cast<std::size_t>(kMaxPlanes))
-      throw std::runtime_error("the gpu port handles at most 6 symmetry planes");
-    params_.kernel = numerics_.kernel;
-    params_.visc.linear = static_cast<Real>(numerics_.viscosity.linear);
-    params_.visc.quadratic = static_cast<Real>(numerics_.viscosity.quadratic);
-    params_.visc.limited = numerics_.viscosity.limited;
-    params_.visc.close_eta = static_cast<Real>(numerics_.viscosity.close_eta);
-    params_.visc.close_fold = static_cast<Real>(numerics_.viscosity.close_fold);
-    params_.correction.max_condition = static_cast<Real>(numerics_.correction.max_condition);
-    params_.delta = static_cast<Real>(numerics_.delta);
-    params_.cfl = static_cast<Real>(numerics_.cfl);
-    params_.balsara = numerics_.viscosity_balsara;
-    params_.bulk = BulkViscosityParams<Real>{static_cast<Real>(numerics_.bulk_viscosity.linear),
-                                             static_cast<Real>(numerics_.bulk_viscosity.quadratic)};
-    params_.bulk_on = numerics_.bulk_viscosity.linear > 0 || numerics_.bulk_viscosity.quadratic > 0;
-    params_.art = make_artificial_stress(static_cast<Real>(numerics_.artificial_stress), numerics_.artificial_stress_exponent,
-                                         numerics_.kernel, static_cast<Real>(numerics_.h_factor),
-                                         numerics_.artificial_stress_deviatoric);
-    params_.body_count = static_cast<int>(scene.bodies.size());
-    params_.plane_count = static_cast<int>(scene.spec.symmetry.size());
-    for (int k = 0; k < params_.plane_count; ++k) {
-      const SymmetryPlaneSpec& plane = scene.spec.symmetry[static_cast<std::size_t>(k)];
-      double side = 0;  // the model lies on one side of each plane (the scene builder guarantees it)
-      for (const Vec3d& x : scene.particles.pos) side += x[plane.axis] - plane.position;
-      params_.planes[k] = Plane{plane.axis, plane.position, side >= 0 ? 1.0 : -1.0, plane.wall};
-      if (plane.wall) params_.wall_planes |= 1u << k;
-    }
+    params_ = make_stage_params<Real>(scene);
     std::vector<MaterialParams<Real>> mats;
     for (const MaterialParams<double>& m : scene.materials) mats.push_back(convert_material<Real>(m));
     materials_ = mats;
-    const std::size_t bc = scene.bodies.size();
-    std::vector<PairContact<Real>> table(bc * bc, PairContact<Real>{0, Real(0), Real(0), Real(0)});
-    for (const ContactSpec& c : scene.spec.contacts) {
-      if (c.kind != ContactSpec::Kind::Penalty) continue;
-      const double distance = c.contact_distance * numerics_.spacing;
-      const PairContact<Real> pc{1, static_cast<Real>(c.penalty_scale), static_cast<Real>(distance),
-                                 static_cast<Real>(c.srad)};
-      table[static_cast<std::size_t>(c.index_a) * bc + static_cast<std::size_t>(c.index_b)] = pc;
-      table[static_cast<std::size_t>(c.index_b) * bc + static_cast<std::size_t>(c.index_a)] = pc;
-      if (c.srad > 0) contact_srad_ = std::max(contact_srad_, c.srad);
-      else contact_reach_ = std::max(contact_reach_, distance);
-    }
-    contacts_ = table;
-    const double h0 = numerics_.h_factor * numerics_.spacing;
-    std::vector<BodySmoothing<Real>> smoothing;
-    for (const BodySpec& b : scene.spec.bodies) {
-      smoothing.push_back(BodySmoothing<Real>{b.variable_h ? 1 : 0, static_cast<Real>(b.h_min_factor * h0),
-                                              static_cast<Real>(b.h_max_factor * h0)});
-      variable_h_ = variable_h_ || b.variable_h;
-    }
+    contacts_ = make_pair_contacts<Real>(scene);
+    const ContactReach reach = contact_reach(scene);
+    contact_reach_ = reach.distance;
+    contact_srad_ = reach.srad;
+    const std::vector<BodySmoothing<Real>> smoothing = make_body_smoothing<Real>(scene);
+    for (const BodySmoothing<Real>& b : smoothing) variable_h_ = variable_h_ || b.variable;
     body_smoothing_ = smoothing;
   }
 
@@ -376,10 +259,7 @@ class Solver final : public GpuStepper {
     clock_.begin();
     // F eq 5.1 per particle, then the minimum (an exact reduction: the same in any order).
     launch<kFlush>("time_step", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      const MaterialParams<Real>& m = mats[mat[i]];
-      Real c = 0;
-      eos_pressure(m.eos, y.rho[i], y.energy[i], c);
-      out[i] = cfl_time_step(cfl, h[i], signal_speed(m, c, y.rho[i]), norm(y.vel[i]));
+      out[i] = point_time_step(mats[mat[i]], cfl, y.rho[i], y.energy[i], h[i], y.vel[i]);
     });
     const Real dt = thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n, std::numeric_limits<Real>::infinity(),
                                    MinOf{});
@@ -598,7 +478,7 @@ class Solver final : public GpuStepper {
     // Ghosts: count the images of each real, scan, fill.
     const int planes = params_.plane_count;
     const int masks = 1 << planes;
-    const Params<Real> prm = params_;
+    const StageParams<Real> prm = params_;
     const double margin = radius_;
     ghost_count_.resize(static_cast<std::size_t>(n) + 1);
     std::int32_t* count = raw(ghost_count_);
@@ -725,39 +605,12 @@ class Solver final : public GpuStepper {
   }
 
   // Raw pointers to the work arrays (sorted slots, reals and ghosts), captured by the pass kernels.
-  struct Work {
-    Vec3p* x;
-    Vec3<Real>* v;
-    Real *rho, *p, *c, *m, *h, *vol, *damage, *av;
-    Sym3<Real>* A;  // (S - P I) / rho^2
-    Sym3<Real>* S;  // deviatoric stress after apply_failure
-    Sym3<Real>* R;  // artificial stress (null when off)
-    std::int32_t *mat, *body;
-    unsigned* let_go;       // walls a real lets go of (bit k for plane k; ghosts 0)
-    unsigned* image_walls;  // walls a ghost is mirrored through (reals 0): a pair takes no part when
-                            // image_walls[j] & let_go[i] (lets_go_of_wall, common/integration.hpp)
-    Mat3<Real>* linv;
-    Mat3<Real>* grad_v;  // velocity gradient by slot, ghosts mirrored (null unless the viscosity is limited)
-    Vec3<Real>* grad_rho;
-    const std::int64_t* list_offset;  // Verlet list of real i: slots list[list_offset[i] .. list_offset[i+1])
-    const std::int32_t* list;
-    const PairContact<Real>* contact;
-    int body_count;
-    IMPACTSPH_HD const PairContact<Real>& pair(std::int32_t a, std::int32_t b) const {
-      return contact[a * body_count + b];
-    }
-    IMPACTSPH_HD bool in_penalty_contact(std::int32_t a) const {
-      for (std::int32_t b = 0; b < body_count; ++b)
-        if (pair(a, b).penalty) return true;
-      return false;
-    }
-  };
-  Work work() {
-    return Work{raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
-                raw(wav_), raw(wA_), raw(wS_), params_.art.on() ? raw(wR_) : nullptr, raw(wmat_), raw(wbody_),
-                raw(wlet_go_), raw(wimage_walls_), raw(wlinv_), params_.visc.limited ? raw(wgv_) : nullptr,
-                raw(wgrad_rho_),
-                raw(list_offset_), raw(list_), raw(contacts_), params_.body_count};
+  // The work arrays by sorted slot, as the stages (common/stages.hpp) read them.
+  StagePoints<Real> points() {
+    return {raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
+            raw(wav_), raw(wA_), raw(wS_), params_.art.on() ? raw(wR_) : nullptr, raw(wmat_), raw(wbody_),
+            raw(wlet_go_), raw(wimage_walls_), raw(wlinv_), params_.visc.limited ? raw(wgv_) : nullptr,
+            raw(wgrad_rho_), raw(contacts_), params_.body_count};
   }
 
   void evaluate(StateArrays<Real>& state, double dt_in) {
@@ -773,9 +626,12 @@ class Solver final : public GpuStepper {
   void evaluate_with(StateArrays<Real>& state, double dt_in) {
     const std::int64_t n = n_, total = n_ + ghosts_;
     const StateView<Real> y = view(state);
-    const Work w = work();
+    const StagePoints<Real> w = points();
+    const FixedKernel<K> kernel{};
+    const std::int64_t* list_offset = raw(list_offset_);  // Verlet list of real i: slots list[list_offset[i] ..
+    const std::int32_t* list = raw(list_);                 // list_offset[i+1])
     const MaterialParams<Real>* mats = raw(materials_);
-    const Params<Real> prm = params_;
+    const StageParams<Real> prm = params_;
     const Real dt = static_cast<Real>(dt_in);
     const std::int32_t* order = raw(order_);
     const std::int32_t* slot = raw(slot_of_);
@@ -791,23 +647,19 @@ class Solver final : public GpuStepper {
     const std::int32_t* body = raw(body_);
     const std::uint8_t* fixed = raw(fixed_);
 
-    // Work arrays in sorted order: reals from the state, ghosts as mirror images of their source. EOS
-    // pressure (with the JH-2 bulking increment) and sound speed; what a particle carries at its damage
-    // (apply_failure: a failed metal no deviator and no tension, F 4.2; JH-2 the tensile limit), and the
-    // damage it brings into the pair factor (its material's choice, pair_damage).
+    // Work arrays in sorted order: reals from the state, ghosts as mirror images of their source
+    // (gather_point, stages.hpp).
     clock_.begin();
     launch<kFlush>("gather", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
       const std::int64_t pnt = order[s];
       const std::int64_t i = pnt < n ? pnt : gsrc[pnt - n];
       const std::int32_t mi = material[i];
-      Real c = 0;
-      Real P = material_pressure(mats[mi], y.rho[i], y.energy[i], bulking[i], c);
-      Sym3<Real> S = y.S[i];
-      apply_failure(mats[mi], S, P, damage[i]);
+      const GatheredPoint<Real> g = gather_point(mats[mi], y.rho[i], y.energy[i], bulking[i], damage[i], y.S[i]);
+      Sym3<Real> S = g.S;
       Vec3p xs = y.pos[i];
       Vec3<Real> vs = y.vel[i];
       Real m = mass[i];
-      const unsigned let_go = walls_let_go(prm.planes, prm.plane_count, S, P, vs);
+      const unsigned let_go = walls_let_go(prm.planes, prm.plane_count, S, g.P, vs);
       unsigned image_walls = 0;
       if (pnt >= n) {
         image_walls = static_cast<unsigned>(gmask[pnt - n]) & prm.wall_planes;
@@ -819,73 +671,44 @@ class Solver final : public GpuStepper {
         S = mirror(S, sr);
       }
       const Real rho = y.rho[i];
-      w.x[s] = xs; w.v[s] = vs; w.rho[s] = rho; w.p[s] = P; w.c[s] = c; w.m[s] = m; w.h[s] = h[i];
-      w.mat[s] = mi; w.body[s] = body[i]; w.damage[s] = pair_damage(mats[mi], damage[i]);
+      w.x[s] = xs; w.v[s] = vs; w.rho[s] = rho; w.p[s] = g.P; w.c[s] = g.c; w.m[s] = m; w.h[s] = h[i];
+      w.mat[s] = mi; w.body[s] = body[i]; w.damage[s] = g.pair_damage;
       w.S[s] = S;
       w.let_go[s] = pnt < n ? let_go : 0u;
       w.image_walls[s] = image_walls;
       w.vol[s] = m / rho;
-      const Real inv_rho2 = Real(1) / (rho * rho);
-      w.A[s] = inv_rho2 * Sym3<Real>{S.xx - P, S.yy - P, S.zz - P, S.xy, S.yz, S.zx};
+      w.A[s] = stress_over_rho2(S, g.P, rho);
       if (prm.art.on()) w.R[s] = artificial_stress(prm.art, w.A[s]);  // before any viscosity joins A
     });
 
     clock_.end(PhaseClock::Gather);
 
-    // Pass 1: correction matrix, velocity and density gradients, the gradients scaled by the damaged pair
-    // factor as the pass 2 terms are (common/pair_terms.hpp).
+    // Pass 1 (stages.hpp): each real's gradients from its list, then the ghosts' mirrored from their sources.
     clock_.begin();
     Mat3<Real>* grad_v = raw(grad_v_);
     std::int32_t* fell = raw(fallback_);
     std::int32_t* ncount = raw(neighbour_count_);
     launch<kFlush>("pass1", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const std::int64_t s = slot[i];
-      const Vec3p xi = w.x[s];
-      const Vec3<Real> vi = w.v[s];
-      const Real rhoi = w.rho[s], hi = w.h[s], di = w.damage[s];
-      const bool face_i = compressive_crack_face(mats, w.mat[s], di);
-      const std::int32_t bi = w.body[s];
-      const unsigned let_go_i = w.let_go[s];
+      const GradientRow<Real> row = gradient_row(w, mats, s);
       Real sum[kGradientSums] = {};
       std::int32_t count = 0;
-      const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
+      const std::int64_t k0 = list_offset[i], k1 = list_offset[i + 1];
       IMPACTSPH_SIMD_SUMS(count, sum[:kGradientSums])
       for (std::int64_t k = k0; k < k1; ++k) {
-        const std::int32_t j = w.list[k];
-        const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
-        const Real hij = Real(0.5) * (hi + w.h[j]);
-        const Real r = norm(xij);
-        if (r < kernel_support(hij)) {
+        GradientSums<Real> one = GradientSums<Real>::zero();
+        if (add_gradient_neighbour(kernel, w, mats, row, list[k], one)) {
           ++count;
-          // bodies in penalty contact do not share sums; nor does i with an image behind a wall it let go of
-          if (!w.pair(bi, w.body[j]).penalty && !(w.image_walls[j] & let_go_i)) {
-            const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
-            GradientSums<Real> one = GradientSums<Real>::zero();
-            const bool face = face_i || compressive_crack_face(mats, w.mat[j], w.damage[j]);
-            add_gradient_pair(one, w.vol[j], gw, xij, w.v[j] - vi, w.rho[j] - rhoi, di, w.damage[j], face);
-            add_flat(sum, one);
-          }
+          add_flat(sum, one);
         }
       }
-      const CorrectedGradients<Real> cg = corrected_gradients(unflatten_gradient_sums(sum), prm.correction);
-      w.linv[s] = cg.l_inverse;
-      w.grad_rho[s] = cg.grad_rho;
+      const CorrectedGradients<Real> cg = finish_gradient_row(prm, w, s, unflatten_gradient_sums(sum));
       grad_v[i] = cg.grad_v;
-      if (prm.visc.limited) w.grad_v[s] = cg.grad_v;
       fell[i] = cg.fell_back ? 1 : 0;
       ncount[i] = count;
-      w.av[s] = prm.balsara ? balsara_factor(cg.grad_v, w.c[s], hi) : Real(1);
-      // The bulk viscosity joins the pressure in (S - P I)/rho^2 (pass 1 does not read A).
-      if (prm.bulk_on) add_bulk_viscosity(prm.bulk, cg.grad_v.trace(), rhoi, w.c[s], hi, w.A[s]);
     });
     launch<kFlush>("ghost_pass1", ghosts_, [=] IMPACTSPH_LAMBDA(std::int64_t k) {
-      const std::int64_t s = slot[n + k], src = slot[gsrc[k]];
-      const Vec3<Real> sg = cast3<Real>(gsign[k]);
-      w.linv[s] = mirror(w.linv[src], sg);
-      w.grad_rho[s] = hadamard(sg, w.grad_rho[src]);
-      w.av[s] = w.av[src];
-      if (prm.bulk_on) w.A[s] = mirror(w.A[src], sg);
-      if (prm.visc.limited) w.grad_v[s] = mirror(w.grad_v[src], sg);
+      mirror_gradient_row(prm, w, slot[n + k], slot[gsrc[k]], cast3<Real>(gsign[k]));
     });
     stats_.correction_fallbacks =
         static_cast<std::size_t>(thrust::reduce(fallback_.begin(), fallback_.begin() + n, std::int64_t(0)));
@@ -895,7 +718,9 @@ class Solver final : public GpuStepper {
                 static_cast<double>(n)
           : 0.0;
 
-    // Stress rate (F 3.5-3.7) and pass 2: continuity with delta-SPH, momentum, energy, penalty contact.
+    // Pass 2 (stages.hpp): the SPH pairs in a loop whose only carried values are sums (IMPACTSPH_SIMD_SUMS,
+    // launch.hpp), then penalty contact, rare and heavy, in a loop of its own (its sums in list order), then
+    // the rates.
     clock_.begin();
     Vec3<Real>* rpos = raw(rate_pos_);
     Vec3<Real>* racc = raw(rate_acc_);
@@ -906,85 +731,38 @@ class Solver final : public GpuStepper {
     Real* rcp = raw(contact_power_);
     launch<kFlush>("pass2", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       const std::int64_t s = slot[i];
-      const Vec3p xi = w.x[s];
-      const Vec3<Real> vi = w.v[s], gri = w.grad_rho[s];
-      const Real rhoi = w.rho[s], hi = w.h[s], mi_mass = w.m[s];
-      const std::int32_t mi = w.mat[s], bi = w.body[s];
-      const MaterialParams<Real>& mat_i = mats[mi];
-      const unsigned let_go_i = w.let_go[s];
-      const PairSide<Real> side_i{w.A[s].full(), w.linv[s], w.damage[s], w.av[s], w.c[s], rhoi,
-                                  compressive_crack_face(mats, mi, w.damage[s]),
-                                  prm.art.on() ? w.R[s].full() : Mat3<Real>::zero(),
-                                  prm.visc.limited ? w.grad_v[s] : Mat3<Real>::zero()};
-      const std::int64_t k0 = w.list_offset[i], k1 = w.list_offset[i + 1];
+      const RateRow<Real> row = rate_row(prm, w, mats, s);
+      const std::int64_t k0 = list_offset[i], k1 = list_offset[i + 1];
       Real sum[5] = {};  // acceleration x, y, z; energy rate; delta-SPH diffusion
       IMPACTSPH_SIMD_SUMS(sum[:5])
       for (std::int64_t k = k0; k < k1; ++k) {
-        const std::int32_t j = w.list[k];
-        const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
-        const Real hij = Real(0.5) * (hi + w.h[j]);
-        const Real r = norm(xij);
-        if (r < kernel_support(hij) && !w.pair(bi, w.body[j]).penalty && !(w.image_walls[j] & let_go_i)) {
-          const Vec3<Real> gw = kernel_grad_factor_of<K>(r, hij) * xij;
-          const PairSide<Real> side_j{w.A[j].full(), w.linv[j], w.damage[j], w.av[j], w.c[j], w.rho[j],
-                                      compressive_crack_face(mats, w.mat[j], w.damage[j]),
-                                      prm.art.on() ? w.R[j].full() : Mat3<Real>::zero(),
-                                      prm.visc.limited ? w.grad_v[j] : Mat3<Real>::zero()};
-          const Real stress_factor = artificial_stress_pair_factor(prm.art, K, r, hij);
-          Vec3<Real> acc{0, 0, 0};
-          Real de = 0;
-          add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vi - w.v[j], hij, w.m[j], stress_factor, acc, de);
+        Vec3<Real> acc{0, 0, 0};
+        Real de = 0, diffusion = 0;
+        if (add_rate_neighbour(kernel, prm, w, mats, row, list[k], acc, de, diffusion)) {
           sum[0] += acc.x;
           sum[1] += acc.y;
           sum[2] += acc.z;
           sum[3] += de;
-          if (w.mat[j] == mi)
-            sum[4] += damaged_delta_sph_term(side_i.damage, w.damage[j], w.vol[j], rhoi, w.rho[j], xij, gri,
-                                             w.grad_rho[j], gw);
+          sum[4] += diffusion;
         }
       }
-      const Vec3<Real> acc{sum[0], sum[1], sum[2]};
-      const Real de = sum[3], diffusion = sum[4];
       Vec3<Real> contact{0, 0, 0};
       Real power = 0;
-      if (w.in_penalty_contact(bi)) {
-        for (std::int64_t k = k0; k < k1; ++k) {
-          const std::int32_t j = w.list[k];
-          const PairContact<Real>& pc = w.pair(bi, w.body[j]);
-          if (!pc.penalty) continue;
-          const Vec3<Real> xij = cast3<Real>(xi - w.x[j]);
-          const Vec3<Real> vij = vi - w.v[j];
-          const Vec3<Real> force = penalty_contact_force(
-              PenaltyContactParams<Real>{pc.scale}, xij, vij, pc.touch(hi, w.h[j]), mi_mass, w.m[j], hi, w.h[j],
-              mat_i.strength.shear_modulus, mats[w.mat[j]].strength.shear_modulus, rhoi, w.rho[j], dt);
-          contact += force;
-          power += Real(0.5) * penalty_contact_energy_rate(force, vij);
-        }
-      }
-      const Mat3<Real> gv = grad_v[i];
-      rS[i] = deviatoric_stress_rate(mat_i, w.S[s], gv);
-      reps[i] = equivalent_strain_rate(gv);
-      const Real c0 = std::sqrt(eos_reference_sound_speed2(mat_i.eos));
-      rdrho[i] = continuity_rate(rhoi, gv, prm.delta, hi, c0, diffusion);
-      rde[i] = de;
-      rcp[i] = power;
-      if (fixed[i]) {
-        rpos[i] = Vec3<Real>{0, 0, 0};
-        racc[i] = Vec3<Real>{0, 0, 0};
-      } else {
-        rpos[i] = vi;
-        racc[i] = acc + (Real(1) / mi_mass) * contact;
-      }
+      if (w.in_penalty_contact(row.body))
+        for (std::int64_t k = k0; k < k1; ++k) add_contact_neighbour(w, mats, row, list[k], dt, contact, power);
+      const PointRates<Real> r = point_rates(prm, w, mats[row.mat], s, grad_v[i], Vec3<Real>{sum[0], sum[1], sum[2]},
+                                             sum[3], sum[4], contact, power, fixed[i] != 0);
+      rpos[i] = r.vel; racc[i] = r.acc; rdrho[i] = r.drho; rde[i] = r.de; rS[i] = r.dS; reps[i] = r.strain_rate;
+      rcp[i] = r.contact_power;
     });
     clock_.end(PhaseClock::Pass2);
   }
 
-  // y = y0 + dt f with the plane reflection, the density floor and the plastic return at the history
-  // variables of the step start (integration.hpp, material.hpp).
+  // y = y0 + dt f (advance_point, stages.hpp).
   void advance(StateArrays<Real>& from, double dt_in, StateArrays<Real>& to, bool record) {
     const StateView<Real> y0 = view(from), out = view(to);
     const MaterialParams<Real>* mats = raw(materials_);
-    const Params<Real> prm = params_;
+    const StageParams<Real> prm = params_;
     const Real dt = static_cast<Real>(dt_in);
     const double dtp = dt_in;
     const Vec3<Real>* rpos = raw(rate_pos_);
@@ -1003,19 +781,16 @@ class Solver final : public GpuStepper {
     Real* h_T = raw(d_temperature_);
     Real* h_rate = raw(history_rate_);
     launch<kFlush>(record ? "advance_full" : "advance_half", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      const MaterialParams<Real>& m = mats[material[i]];
-      Vec3p x = y0.pos[i] + dtp * cast3<double>(rpos[i]);
-      Vec3<Real> v = y0.vel[i] + dt * racc[i];
-      for (int k = 0; k < prm.plane_count; ++k)
-        reflect_at_plane(x, v, prm.planes[k].axis, prm.planes[k].position, prm.planes[k].side);
+      Vec3p x = y0.pos[i];
+      Vec3<Real> v = y0.vel[i];
+      Real rho = y0.rho[i], e = y0.energy[i];
+      Sym3<Real> S = y0.S[i];
+      const PlasticResult<Real> pr = advance_point(prm, mats[material[i]], dt, dtp, x, v, rho, e, S, rpos[i], racc[i],
+                                                   rdrho[i], rde[i], rS[i], reps[i], eps_p[i], T[i], bulking[i], D[i]);
       out.pos[i] = x;
       out.vel[i] = v;
-      const Real rho = advance_density(m, y0.rho[i], rdrho[i], dt);
       out.rho[i] = rho;
-      const Real e = y0.energy[i] + dt * rde[i];
       out.energy[i] = e;
-      Sym3<Real> S = y0.S[i] + dt * rS[i];
-      const PlasticResult<Real> pr = trial_plastic_return(m, S, eps_p[i], reps[i], T[i], rho, e, bulking[i], D[i]);
       out.S[i] = S;
       if (record) {
         h_eps[i] = pr.d_eps_p;
@@ -1049,10 +824,8 @@ class Solver final : public GpuStepper {
     const Real* h_T = raw(d_temperature_);
     const Real* h_rate = raw(history_rate_);
     launch<kFlush>("finish_step", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      finish_step(mats[material[i]], y.rho[i], y.energy[i], y.S[i], eps_p[i], work[i], T[i], D[i], P[i], bulking[i],
-                  h_eps[i], h_work[i], h_T[i], h_rate[i]);
-      const BodySmoothing<Real> b = smoothing[body[i]];
-      if (b.variable) h[i] = advance_smoothing_length(h[i], grad_v[i].trace(), dt, b.h_lo, b.h_hi);
+      finish_point(mats[material[i]], smoothing[body[i]], grad_v[i], dt, y.rho[i], y.energy[i], y.S[i], eps_p[i],
+                   work[i], T[i], D[i], P[i], bulking[i], h[i], h_eps[i], h_work[i], h_T[i], h_rate[i]);
     });
   }
 
@@ -1065,13 +838,7 @@ class Solver final : public GpuStepper {
     bad_.resize(static_cast<std::size_t>(n));
     std::int64_t* bad = raw(bad_);
     launch<kFlush>("check_state", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      const Vec3p x = y.pos[i];
-      const Vec3<Real> v = y.vel[i];
-      const Sym3<Real> S = y.S[i];
-      const bool ok = std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) && std::isfinite(v.x) &&
-                      std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(y.rho[i]) && y.rho[i] > Real(0) &&
-                      std::isfinite(y.energy[i]) && std::isfinite(S.xx) && std::isfinite(S.yy) && std::isfinite(S.zz) &&
-                      std::isfinite(S.xy) && std::isfinite(S.yz) && std::isfinite(S.zx);
+      const bool ok = state_is_finite(y.pos[i], y.vel[i], y.rho[i], y.energy[i], y.S[i]);
       bad[i] = ok ? std::numeric_limits<std::int64_t>::max() : (static_cast<std::int64_t>(orig[i]) << 32) | i;
     });
     const std::int64_t first =
@@ -1083,20 +850,14 @@ class Solver final : public GpuStepper {
     const Vec3<Real> v = y1_.vel[i];
     const Sym3<Real> S = y1_.S[i];
     const std::int32_t b = body_[i];
-    std::ostringstream msg;
-    msg.precision(6);
-    msg << "the solution diverged in the step of dt = " << dt << " s at particle " << o << " of body '"
-        << body_names_[static_cast<std::size_t>(b)] << "': position (" << x.x << ", " << x.y << ", " << x.z
-        << ") m, velocity (" << v.x << ", " << v.y << ", " << v.z << ") m/s, density " << Real(y1_.rho[i])
-        << " kg/m^3, specific energy " << Real(y1_.energy[i]) << " J/kg, von Mises " << von_mises(S)
-        << " Pa. Try a smaller numerics.cfl or larger viscosity coefficients.";
-    throw DivergenceError(msg.str());
+    throw particle_diverged(dt, static_cast<long long>(o), body_names_[static_cast<std::size_t>(b)], {x.x, x.y, x.z},
+                            {v.x, v.y, v.z}, Real(y1_.rho[i]), Real(y1_.energy[i]), von_mises(S));
   }
 
   NumericsSpec numerics_;
   std::string name_;
   std::vector<std::string> body_names_;
-  Params<Real> params_{};
+  StageParams<Real> params_{};
   DVec<MaterialParams<Real>> materials_;
   DVec<PairContact<Real>> contacts_;
   DVec<BodySmoothing<Real>> body_smoothing_;

@@ -2,75 +2,26 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
-#include "common/artificial_stress.hpp"
-#include "common/contact.hpp"
-#include "common/correction.hpp"
-#include "common/damage.hpp"
-#include "common/delta_sph.hpp"
-#include "common/integration.hpp"
 #include "common/errors.hpp"
-#include "common/kernels.hpp"
-#include "common/pair_terms.hpp"
-#include "common/smoothing_length.hpp"
-#include "common/material.hpp"
-#include "common/timestep.hpp"
 #include "common/verlet.hpp"
-#include "common/viscosity.hpp"
 
 namespace impactsph::reference {
 
-namespace {
-
-bool finite(Vec3d v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-bool finite(Sym3d s) {
-  return std::isfinite(s.xx) && std::isfinite(s.yy) && std::isfinite(s.zz) && std::isfinite(s.xy) && std::isfinite(s.yz) &&
-         std::isfinite(s.zx);
-}
-
-}  // namespace
-
 ReferenceSolver::ReferenceSolver(const Scene& scene)
-    : numerics_(scene.spec.numerics), symmetry_(scene.spec.symmetry), materials_(scene.materials),
-      contacts_(scene.spec.contacts) {
+    : numerics_(scene.spec.numerics), params_(make_stage_params<double>(scene)),
+      contacts_(make_pair_contacts<double>(scene)), smoothing_(make_body_smoothing<double>(scene)),
+      contact_reach_(contact_reach(scene)), materials_(scene.materials) {
   for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
-  body_count_ = scene.bodies.size();
-  // The model lies on one side of each symmetry plane (the scene builder guarantees it).
-  for (const SymmetryPlaneSpec& plane : symmetry_) {
-    double side = 0;
-    for (const Vec3d& x : scene.particles.pos) side += x[plane.axis] - plane.position;
-    plane_side_.push_back(side >= 0 ? 1.0 : -1.0);
-    if (plane.wall) wall_planes_ |= 1u << (plane_side_.size() - 1);
-  }
-  contact_of_pair_.assign(body_count_ * body_count_, nullptr);
-  for (const ContactSpec& c : contacts_) {
-    if (c.kind != ContactSpec::Kind::Penalty) continue;
-    const std::size_t a = static_cast<std::size_t>(c.index_a), b = static_cast<std::size_t>(c.index_b);
-    contact_of_pair_[a * body_count_ + b] = &c;
-    contact_of_pair_[b * body_count_ + a] = &c;
-    if (c.srad > 0) contact_srad_ = std::max(contact_srad_, c.srad);
-    else contact_reach_ = std::max(contact_reach_, c.contact_distance * numerics_.spacing);
-  }
-  const double h0 = numerics_.h_factor * numerics_.spacing;
-  for (const BodySpec& b : scene.spec.bodies) {
-    body_variable_h_.push_back(b.variable_h ? 1 : 0);
-    body_h_lo_.push_back(b.h_min_factor * h0);
-    body_h_hi_.push_back(b.h_max_factor * h0);
-  }
 }
 
 double ReferenceSolver::stable_time_step(const ParticleSet& p) {
   const std::int64_t n = static_cast<std::int64_t>(p.size());
   double dt = std::numeric_limits<double>::infinity();
 #pragma omp parallel for schedule(static) reduction(min : dt)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
-    double c = 0;
-    eos_pressure(mat.eos, p.rho[i], p.energy[i], c);
-    const double ci = signal_speed(mat, c, p.rho[i]);
-    dt = std::min(dt, cfl_time_step(numerics_.cfl, p.h[i], ci, norm(p.vel[i])));
-  }
+  for (std::int64_t i = 0; i < n; ++i)
+    dt = std::min(dt, point_time_step(materials_[static_cast<std::size_t>(p.material[i])], params_.cfl, p.rho[i],
+                                      p.energy[i], p.h[i], p.vel[i]));
   return dt;
 }
 
@@ -79,8 +30,8 @@ double ReferenceSolver::stable_time_step(const ParticleSet& p) {
 void ReferenceSolver::find_ghosts(const std::vector<Vec3d>& pos, double margin) {
   ghosts_.clear();
   const std::size_t n = pos.size();
-  for (std::size_t k_plane = 0; k_plane < symmetry_.size(); ++k_plane) {
-    const SymmetryPlaneSpec& plane = symmetry_[k_plane];
+  for (int k_plane = 0; k_plane < params_.plane_count; ++k_plane) {
+    const Plane& plane = params_.planes[k_plane];
     const std::size_t existing = ghosts_.size();
     for (std::size_t k = 0; k < n + existing; ++k) {
       Ghost g = k < n ? Ghost{static_cast<std::int32_t>(k), Vec3d{1, 1, 1}, Vec3d{0, 0, 0}, 0u} : ghosts_[k - n];
@@ -93,32 +44,35 @@ void ReferenceSolver::find_ghosts(const std::vector<Vec3d>& pos, double margin) 
   }
 }
 
+StagePoints<double> ReferenceSolver::points() {
+  return {x_.data(), v_.data(), rho_.data(), pressure_.data(), sound_speed_.data(), m_.data(), hh_.data(),
+          volume_.data(), pair_damage_.data(), av_factor_.data(), s_over_rho2_.data(), stress_.data(),
+          artificial_stress_.empty() ? nullptr : artificial_stress_.data(), mat_.data(), bb_.data(), let_go_.data(),
+          image_walls_.data(), l_inverse_.data(), grad_v_.data(), grad_rho_.data(), contacts_.data(),
+          params_.body_count};
+}
+
 void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   const std::size_t n = y.pos.size();
   const std::size_t total = n + ghosts_.size();
   const std::int64_t ni = static_cast<std::int64_t>(n);
+  const MaterialParams<double>* mats = materials_.data();
 
-  // Fill the work arrays: real particles, then ghosts from their sources.
+  // Fill the work arrays: real particles (gather_point), then ghosts from their sources.
   x_.resize(total); v_.resize(total); rho_.resize(total); pressure_.resize(total); sound_speed_.resize(total);
   m_.resize(total); hh_.resize(total); mat_.resize(total); s_over_rho2_.resize(total); l_inverse_.resize(total);
   grad_rho_.resize(total); grad_v_.resize(total); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
-  pair_damage_.resize(total); let_go_.resize(n); image_walls_.resize(total);
-  std::vector<Sym3d>& stress = stress_;
-  stress.resize(total);
+  pair_damage_.resize(total); let_go_.resize(total); image_walls_.resize(total); stress_.resize(total);
+  av_factor_.resize(total);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < ni; ++i) {
     x_[i] = y.pos[i]; v_[i] = y.vel[i]; rho_[i] = y.rho[i]; m_[i] = mass_[i]; hh_[i] = h_[i];
-    mat_[i] = material_[i]; stress[i] = y.dev_stress[i]; bb_[i] = body_[i]; damage_all_[i] = damage_[i];
-    const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(mat_[i])];
-    pressure_[i] = material_pressure(mat, rho_[i], y.energy[i], bulking_[i], sound_speed_[i]);
-    apply_failure(mat, stress[i], pressure_[i], damage_all_[i]);  // failed: no deviator, no tension (JH-2: limit)
-    pair_damage_[i] = pair_damage(mat, damage_all_[i]);
-    unsigned let_go = 0;
-    for (std::size_t k = 0; k < symmetry_.size(); ++k)
-      if (((wall_planes_ >> k) & 1u) &&
-          lets_go_of_wall(stress[i], pressure_[i], v_[i], symmetry_[k].axis, plane_side_[k]))
-        let_go |= 1u << k;  // it lets go of wall k: no pairs with images behind it, and no images of its own
-    let_go_[i] = let_go;
+    mat_[i] = material_[i]; bb_[i] = body_[i]; damage_all_[i] = damage_[i];
+    const GatheredPoint<double> g =
+        gather_point(mats[mat_[i]], rho_[i], y.energy[i], bulking_[i], damage_all_[i], y.dev_stress[i]);
+    pressure_[i] = g.P; sound_speed_[i] = g.c; stress_[i] = g.S; pair_damage_[i] = g.pair_damage;
+    // the walls it lets go of: no pairs with images behind them, and no images of its own
+    let_go_[i] = walls_let_go(params_.planes, params_.plane_count, stress_[i], pressure_[i], v_[i]);
     image_walls_[i] = 0;
   }
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
@@ -128,161 +82,63 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     v_[i] = hadamard(g.sign, y.vel[s]);
     rho_[i] = rho_[s]; hh_[i] = hh_[s]; mat_[i] = mat_[s]; bb_[i] = bb_[s];
     m_[i] = (g.walls & let_go_[s]) ? 0.0 : m_[s];  // its source let go of a wall it is mirrored through
+    let_go_[i] = 0;
     image_walls_[i] = g.walls;
     damage_all_[i] = damage_all_[s];
     pair_damage_[i] = pair_damage_[s];
     pressure_[i] = pressure_[s]; sound_speed_[i] = sound_speed_[s];
-    stress[i] = mirror(stress[s], g.sign);
+    stress_[i] = mirror(stress_[s], g.sign);
   }
+  // Artificial stress of each particle and ghost from its own stress, before any viscosity joins it.
+  artificial_stress_.resize(params_.art.on() ? total : 0);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < static_cast<std::int64_t>(total); ++i) {
     volume_[i] = m_[i] / rho_[i];
-    const double inv_rho2 = 1.0 / (rho_[i] * rho_[i]);
-    const Sym3d& s = stress[i];
-    s_over_rho2_[i] = inv_rho2 * Sym3d{s.xx - pressure_[i], s.yy - pressure_[i], s.zz - pressure_[i], s.xy, s.yz, s.zx};
-  }
-  // Artificial stress of each particle and ghost from its own stress, before any viscosity joins it.
-  const ArtificialStressParams<double> art = make_artificial_stress(
-      numerics_.artificial_stress, numerics_.artificial_stress_exponent, numerics_.kernel, numerics_.h_factor,
-      numerics_.artificial_stress_deviatoric);
-  artificial_stress_.resize(art.on() ? total : 0);
-  if (art.on()) {
-#pragma omp parallel for schedule(static)
-    for (std::int64_t i = 0; i < static_cast<std::int64_t>(total); ++i)
-      artificial_stress_[i] = artificial_stress(art, s_over_rho2_[i]);
+    s_over_rho2_[i] = stress_over_rho2(stress_[i], pressure_[i], rho_[i]);
+    if (params_.art.on()) artificial_stress_[i] = artificial_stress(params_.art, s_over_rho2_[i]);
   }
 
-  const KernelKind kernel = numerics_.kernel;
+  const StagePoints<double> w = points();
+  const RuntimeKernel kernel{params_.kernel};
   const std::int64_t* off = neighbours_.offsets.data();
   const std::int32_t* nb = neighbours_.indices.data();
 
-  // Pass 1: correction matrix L_i (F 2.13), velocity gradient, renormalised density gradient (F 2.19), the
-  // gradients scaled by the damage factor 1 - D_ij (F 4.10) as the pass 2 terms are.
+  // Pass 1 (stages.hpp): each real's gradients from its neighbours, then the ghosts' mirrored from their sources.
   std::size_t fallbacks = 0;
   std::int64_t pairs = 0;  // neighbours within the kernel support, for the statistics
 #pragma omp parallel for schedule(static) reduction(+ : fallbacks, pairs)
   for (std::int64_t i = 0; i < ni; ++i) {
     GradientSums<double> sums = GradientSums<double>::zero();
-    const Vec3d xi = x_[i], vi = v_[i];
-    const double rhoi = rho_[i], hi = hh_[i], di = pair_damage_[i];
-    const bool face_i = crack_face(static_cast<std::size_t>(i));
-    const std::int32_t bi = bb_[i];
-    for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
-      const std::int32_t j = nb[k];
-      const Vec3d xij = xi - x_[j];
-      const double hij = 0.5 * (hi + hh_[j]);
-      const double r = norm(xij);
-      if (r >= kernel_support(hij)) continue;
-      ++pairs;
-      if (penalty_between(bi, bb_[j])) continue;  // bodies in penalty contact do not share sums
-      if (image_walls_[j] & let_go_[i]) continue;  // i let go of the wall this image lies behind
-      const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      add_gradient_pair(sums, volume_[j], gw, xij, v_[j] - vi, rho_[j] - rhoi, di, pair_damage_[j],
-                        face_i || crack_face(static_cast<std::size_t>(j)));
-    }
-    const CorrectedGradients<double> cg = corrected_gradients(sums, numerics_.correction);
+    const GradientRow<double> row = gradient_row(w, mats, i);
+    for (std::int64_t k = off[i]; k < off[i + 1]; ++k)
+      if (add_gradient_neighbour(kernel, w, mats, row, nb[k], sums)) ++pairs;
+    const CorrectedGradients<double> cg = finish_gradient_row(params_, w, i, sums);
     if (cg.fell_back) ++fallbacks;
-    l_inverse_[i] = cg.l_inverse;
     grad_v_[i] = cg.grad_v;
-    grad_rho_[i] = cg.grad_rho;
   }
   stats_.correction_fallbacks = fallbacks;
   stats_.mean_neighbours = ni ? static_cast<double>(pairs) / static_cast<double>(ni) : 0.0;
-  // Viscosity factor per particle: 1, or the Balsara shear limiter of its velocity gradient.
-  av_factor_.resize(total);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < ni; ++i)
-    av_factor_[i] = numerics_.viscosity_balsara ? balsara_factor(grad_v_[i], sound_speed_[i], hh_[i]) : 1.0;
-  // Bulk viscosity (viscosity.hpp) from each particle's own div v, added to its pressure in (S - P I)/rho^2;
-  // a ghost carries its source's (isotropic, so its mirror is itself).
-  const BulkViscosityParams<double> bulk = numerics_.bulk_viscosity;
-  const bool bulk_on = bulk.linear > 0 || bulk.quadratic > 0;
-  if (bulk_on) {
-#pragma omp parallel for schedule(static)
-    for (std::int64_t i = 0; i < ni; ++i)
-      add_bulk_viscosity(bulk, grad_v_[i].trace(), rho_[i], sound_speed_[i], hh_[i], s_over_rho2_[i]);
-  }
-  for (std::size_t k = 0; k < ghosts_.size(); ++k) {
-    const Ghost& g = ghosts_[k];
-    const std::size_t s = static_cast<std::size_t>(g.source);
-    l_inverse_[n + k] = mirror(l_inverse_[s], g.sign);
-    grad_rho_[n + k] = hadamard(g.sign, grad_rho_[s]);
-    av_factor_[n + k] = av_factor_[s];
-    if (bulk_on) s_over_rho2_[n + k] = mirror(s_over_rho2_[s], g.sign);
-    if (numerics_.viscosity.limited) grad_v_[n + k] = mirror(grad_v_[s], g.sign);
-  }
+  for (std::size_t k = 0; k < ghosts_.size(); ++k)
+    mirror_gradient_row(params_, w, static_cast<std::int64_t>(n + k), ghosts_[k].source, ghosts_[k].sign);
 
-  // Constitutive rate: Jaumann deviatoric stress rate of the body's strength model (F 3.5-3.7).
+  // Pass 2 (stages.hpp): the SPH pairs and the penalty contact pairs of each real, then its rates.
   f.vel.resize(n); f.acc.resize(n); f.drho.resize(n); f.denergy.resize(n); f.dstress.resize(n);
   f.strain_rate.resize(n); f.contact_power.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < ni; ++i) {
-    f.dstress[i] = deviatoric_stress_rate(materials_[static_cast<std::size_t>(mat_[i])], stress[i], grad_v_[i]);
-    f.strain_rate[i] = equivalent_strain_rate(grad_v_[i]);
-  }
-
-  // Pass 2: continuity with delta-SPH (Marrone form), momentum (F 2.11) and energy (consistent F 2.12),
-  // the pair terms (diffusion included) scaled by the damage factor 1 - D_ij (F 4.10); penalty contact
-  // (F 4.1-4.6) between bodies that do not share sums.
-  const ViscosityParams<double> visc = numerics_.viscosity;
-  const double delta = numerics_.delta;
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < ni; ++i) {
-    const Vec3d xi = x_[i], vi = v_[i], gri = grad_rho_[i];
-    const double rhoi = rho_[i], hi = hh_[i];
-    const std::int32_t mi = mat_[i], bi = bb_[i];
-    const PairSide<double> side_i = pair_side(i);
-    const unsigned let_go_i = let_go_[i];
+    const RateRow<double> row = rate_row(params_, w, mats, i);
     Vec3d acc{0, 0, 0}, contact{0, 0, 0};
     double de = 0, diffusion = 0, contact_power = 0;
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int32_t j = nb[k];
-      const Vec3d xij = xi - x_[j];
-      if (const ContactSpec* c = penalty_between(bi, bb_[j])) {
-        const MaterialParams<double>& mat_i = materials_[static_cast<std::size_t>(mi)];
-        const MaterialParams<double>& mat_j = materials_[static_cast<std::size_t>(mat_[j])];
-        const Vec3d vij = vi - v_[j];
-        const double touch = contact_touch_distance(c->srad, c->contact_distance * numerics_.spacing, hi, hh_[j]);
-        const Vec3d force = penalty_contact_force(PenaltyContactParams<double>{c->penalty_scale}, xij, vij,
-                                                  touch, m_[i], m_[j], hi, hh_[j],
-                                                  mat_i.strength.shear_modulus, mat_j.strength.shear_modulus, rhoi,
-                                                  rho_[j], dt);
-        contact += force;
-        contact_power += 0.5 * penalty_contact_energy_rate(force, vij);
-        continue;
-      }
-      const double hij = 0.5 * (hi + hh_[j]);
-      const double r = norm(xij);
-      if (r >= kernel_support(hij) || (image_walls_[j] & let_go_i)) continue;
-      const Vec3d gw = kernel_grad_factor(kernel, r, hij) * xij;
-      const double stress_factor = artificial_stress_pair_factor(art, kernel, r, hij);
-      add_momentum_energy_pair(side_i, pair_side(j), visc, gw, xij, vi - v_[j], hij, m_[j], stress_factor, acc, de);
-      if (mat_[j] == mi)
-        diffusion += damaged_delta_sph_term(side_i.damage, pair_damage_[j], volume_[j], rhoi, rho_[j], xij, gri,
-                                            grad_rho_[j], gw);
+      if (w.pair(row.body, bb_[j]).penalty) add_contact_neighbour(w, mats, row, j, dt, contact, contact_power);
+      else add_rate_neighbour(kernel, params_, w, mats, row, j, acc, de, diffusion);
     }
-    const double c0 = std::sqrt(eos_reference_sound_speed2(materials_[static_cast<std::size_t>(mi)].eos));
-    f.drho[i] = continuity_rate(rhoi, grad_v_[i], delta, hi, c0, diffusion);
-    f.denergy[i] = de;
-    f.contact_power[i] = contact_power;
-    if (fixed_[i]) {
-      f.vel[i] = Vec3d{0, 0, 0};
-      f.acc[i] = Vec3d{0, 0, 0};
-    } else {
-      f.vel[i] = vi;
-      f.acc[i] = acc + (1.0 / m_[i]) * contact;
-    }
+    const PointRates<double> r = point_rates(params_, w, mats[mat_[i]], i, grad_v_[i], acc, de, diffusion, contact,
+                                             contact_power, fixed_[i] != 0);
+    f.vel[i] = r.vel; f.acc[i] = r.acc; f.drho[i] = r.drho; f.denergy[i] = r.de; f.dstress[i] = r.dS;
+    f.strain_rate[i] = r.strain_rate; f.contact_power[i] = r.contact_power;
   }
-}
-
-bool ReferenceSolver::crack_face(std::size_t i) const {
-  return compressive_crack_face(materials_.data(), mat_[i], pair_damage_[i]);
-}
-
-PairSide<double> ReferenceSolver::pair_side(std::size_t i) const {
-  return {s_over_rho2_[i].full(), l_inverse_[i], pair_damage_[i], av_factor_[i], sound_speed_[i], rho_[i], crack_face(i),
-          artificial_stress_.empty() ? Mat3d::zero() : artificial_stress_[i].full(),
-          numerics_.viscosity.limited ? grad_v_[i] : Mat3d::zero()};
 }
 
 void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {
@@ -296,18 +152,12 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
   }
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i) {
-    out.pos[i] = y0.pos[i] + dt * f.vel[i];
-    out.vel[i] = y0.vel[i] + dt * f.acc[i];
-    for (std::size_t k = 0; k < symmetry_.size(); ++k)
-      reflect_at_plane(out.pos[i], out.vel[i], symmetry_[k].axis, symmetry_[k].position, plane_side_[k]);
-    out.rho[i] = advance_density(materials_[static_cast<std::size_t>(material_[i])], y0.rho[i], f.drho[i], dt);
-    out.energy[i] = y0.energy[i] + dt * f.denergy[i];
-    // Trial stress, then the plastic return at the history variables of the step start.
-    Sym3d s = y0.dev_stress[i] + dt * f.dstress[i];
-    const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(material_[i])];
-    const PlasticResult<double> pr = trial_plastic_return(mat, s, plastic_strain_[i], f.strain_rate[i], temperature_[i],
-                                                          out.rho[i], out.energy[i], bulking_[i], damage_[i]);
-    out.dev_stress[i] = s;
+    out.pos[i] = y0.pos[i]; out.vel[i] = y0.vel[i]; out.rho[i] = y0.rho[i]; out.energy[i] = y0.energy[i];
+    out.dev_stress[i] = y0.dev_stress[i];
+    const PlasticResult<double> pr =
+        advance_point(params_, materials_[static_cast<std::size_t>(material_[i])], dt, dt, out.pos[i], out.vel[i],
+                      out.rho[i], out.energy[i], out.dev_stress[i], f.vel[i], f.acc[i], f.drho[i], f.denergy[i],
+                      f.dstress[i], f.strain_rate[i], plastic_strain_[i], temperature_[i], bulking_[i], damage_[i]);
     if (history) {
       history->d_eps_p[i] = pr.d_eps_p;
       history->d_plastic_work[i] = pr.plastic_work;
@@ -320,17 +170,10 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
 void ReferenceSolver::check_state(const State& y, double dt) const {
   const std::size_t n = y.pos.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (finite(y.pos[i]) && finite(y.vel[i]) && std::isfinite(y.rho[i]) && y.rho[i] > 0 && std::isfinite(y.energy[i]) &&
-        finite(y.dev_stress[i]))
-      continue;
-    std::ostringstream msg;
-    msg.precision(6);
-    msg << "the solution diverged in the step of dt = " << dt << " s at particle " << i << " of body '"
-        << body_names_[static_cast<std::size_t>(body_[i])] << "': position (" << y.pos[i].x << ", " << y.pos[i].y << ", "
-        << y.pos[i].z << ") m, velocity (" << y.vel[i].x << ", " << y.vel[i].y << ", " << y.vel[i].z
-        << ") m/s, density " << y.rho[i] << " kg/m^3, specific energy " << y.energy[i] << " J/kg, von Mises "
-        << von_mises(y.dev_stress[i]) << " Pa. Try a smaller numerics.cfl or larger viscosity coefficients.";
-    throw DivergenceError(msg.str());
+    if (state_is_finite(y.pos[i], y.vel[i], y.rho[i], y.energy[i], y.dev_stress[i])) continue;
+    const Vec3d x = y.pos[i], v = y.vel[i];
+    throw particle_diverged(dt, static_cast<long long>(i), body_names_[static_cast<std::size_t>(body_[i])],
+                            {x.x, x.y, x.z}, {v.x, v.y, v.z}, y.rho[i], y.energy[i], von_mises(y.dev_stress[i]));
   }
 }
 
@@ -342,7 +185,7 @@ void ReferenceSolver::load_constants(const ParticleSet& p) {
 }
 
 double ReferenceSolver::search_reach() const {
-  return impactsph::search_reach(kernel_support(h_max_), contact_reach_, contact_srad_, h_max_);
+  return impactsph::search_reach(kernel_support(h_max_), contact_reach_.distance, contact_reach_.srad, h_max_);
 }
 
 // Each row of the list is sorted by neighbour index, so that the pair sums are taken in an order that
@@ -423,17 +266,11 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
   // History variables of the final stage: plastic strain, adiabatic heating, damage, bulking (F 4.7-4.9,
   // X eq 28; integration.hpp), and the smoothing length.
 #pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) {
-    const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
-    finish_step(mat, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i], p.plastic_work[i], p.temperature[i],
-                p.damage[i], p.pressure[i], p.bulking_pressure[i], history.d_eps_p[i], history.d_plastic_work[i],
-                history.d_temperature[i], history.strain_rate[i]);
-    // Variable smoothing length (X eqs 9-10): dh/dt = (1/3) h div v, within the body's bounds.
-    const std::size_t b = static_cast<std::size_t>(p.body[i]);
-    if (body_variable_h_[b])
-      p.h[i] = advance_smoothing_length(p.h[i], grad_v_[static_cast<std::size_t>(i)].trace(), dt, body_h_lo_[b],
-                                        body_h_hi_[b]);
-  }
+  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
+    finish_point(materials_[static_cast<std::size_t>(p.material[i])], smoothing_[static_cast<std::size_t>(p.body[i])],
+                 grad_v_[static_cast<std::size_t>(i)], dt, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i],
+                 p.plastic_work[i], p.temperature[i], p.damage[i], p.pressure[i], p.bulking_pressure[i], p.h[i],
+                 history.d_eps_p[i], history.d_plastic_work[i], history.d_temperature[i], history.strain_rate[i]);
 }
 
 }  // namespace impactsph::reference

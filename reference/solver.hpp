@@ -13,8 +13,9 @@
 #pragma once
 #include <vector>
 
-#include "common/pair_terms.hpp"
 #include "common/scene.hpp"
+#include "common/stage_setup.hpp"
+#include "common/stages.hpp"
 #include "common/stepper.hpp"
 #include "reference/neighbours.hpp"
 
@@ -34,7 +35,7 @@ class ReferenceSolver final : public Stepper {
 
  private:
   // Per-axis affine map x' = sign x + shift taking a real particle to its mirror image; walls: bit k set
-  // when the image was mirrored through symmetry_[k] and that plane is a wall (lets_go_of_wall,
+  // when the image was mirrored through plane k and that plane is a wall (lets_go_of_wall,
   // common/integration.hpp).
   struct Ghost {
     std::int32_t source;
@@ -69,21 +70,16 @@ class ReferenceSolver final : public Stepper {
   void update_neighbours(const ParticleSet& p, double dt);
   void evaluate(const State& y, Rates& f, double dt);
   void advance(const State& y0, const Rates& f, double dt, State& out, History* history) const;
-  // How the bodies of two particles interact: shared SPH sums or penalty contact.
-  const ContactSpec* penalty_between(std::int32_t body_a, std::int32_t body_b) const {
-    return contact_of_pair_[static_cast<std::size_t>(body_a) * body_count_ + static_cast<std::size_t>(body_b)];
-  }
   void check_state(const State& y, double dt) const;
-  // What particle or ghost i brings to the pair terms of pass 2.
-  PairSide<double> pair_side(std::size_t i) const;
-  // Whether particle i (real or ghost) is a crack face (compressive_crack_face of its material).
-  bool crack_face(std::size_t i) const;
+  // The work arrays as the stages (common/stages.hpp) read them.
+  StagePoints<double> points();
 
   NumericsSpec numerics_;
-  std::vector<SymmetryPlaneSpec> symmetry_;
-  std::vector<double> plane_side_;  // +1 or -1: the side of each symmetry plane the model lies on
+  StageParams<double> params_;                 // numerics and planes (common/stage_setup.hpp)
+  std::vector<PairContact<double>> contacts_;  // how each pair of bodies interacts
+  std::vector<BodySmoothing<double>> smoothing_;  // variable smoothing length per body
+  ContactReach contact_reach_;                 // how far the penalty contacts reach
   std::vector<MaterialParams<double>> materials_;
-  std::vector<ContactSpec> contacts_;
   // Constant per particle (copied from the scene at each step).
   std::vector<double> mass_, h_;
   std::vector<std::int32_t> material_;
@@ -93,10 +89,9 @@ class ReferenceSolver final : public Stepper {
   double h_max_ = 0;
 
   std::vector<Ghost> ghosts_;
-  // Walls: per real particle the walls it let go of, per point (reals 0) the walls of its image; bit k for
-  // symmetry_[k]. A pair takes no part when image_walls_[j] & let_go_[i] (lets_go_of_wall).
+  // Walls: per point the walls it let go of (ghosts 0) and the walls of its image (reals 0); bit k for
+  // plane k. A pair takes no part when image_walls_[j] & let_go_[i] (lets_go_of_wall).
   std::vector<unsigned> let_go_, image_walls_;
-  unsigned wall_planes_ = 0;
   NeighbourList neighbours_;  // Verlet list: each row in index order (reals, then ghosts)
   bool list_valid_ = false;
   std::vector<Vec3d> pos_at_build_;  // positions when the list was built
@@ -112,14 +107,7 @@ class ReferenceSolver final : public Stepper {
   std::vector<double> damage_, plastic_strain_, temperature_, bulking_;  // history variables at the step start
   std::vector<std::int32_t> bb_;    // body of reals and ghosts
   std::vector<double> damage_all_;  // damage of reals and ghosts
-  std::size_t body_count_ = 0;
-  std::vector<const ContactSpec*> contact_of_pair_;  // penalty contact of a body pair, or null (shared sums)
-  double contact_reach_ = 0;        // largest penalty contact distance in spacings, m
-  double contact_srad_ = 0;         // largest SRAD of the penalty contacts (reach srad x largest h)
   std::vector<double> pair_damage_; // damage each particle brings into the pair factor (reals and ghosts)
-  // Variable smoothing length per body (X eqs 9-10): on/off and the bounds in m.
-  std::vector<std::uint8_t> body_variable_h_;
-  std::vector<double> body_h_lo_, body_h_hi_;
   std::vector<Sym3d> stress_;       // deviatoric stress of reals and ghosts
   // Stage states and rates, kept between steps so that a step allocates nothing.
   State y0_, y_half_, y1_;
