@@ -54,26 +54,37 @@ def main():
         a = read_vtu(os.path.join(run, name))
         pos, body, damage, eps = a['Points'], a['body_id'], a['damage'], a['plastic_strain']
         width, dx = band_width(a, radius)
-        centre, ring, band, failed, nose = [], [], [], 0, math.inf
+        band, failed, nose = [], 0, math.inf
         for k, p in enumerate(pos):
             if body[k] == 1:
                 nose = min(nose, p[2])
                 continue
             if body[k] != 0:
                 continue
-            r = math.hypot(p[0], p[1])
-            if r < 0.5 * radius:
-                centre.append(p[2])
-            elif 1.4 * radius < r < 1.6 * radius:
-                ring.append(p[2])
-            if 0.9 * radius < r < 1.1 * radius:
+            if 0.9 * radius < math.hypot(p[0], p[1]) < 1.1 * radius:
                 band.append(eps[k])
             if damage[k] >= 0.99:
                 failed += 1
-        dz = sum(ring) / len(ring) - sum(centre) / len(centre) if centre and ring else float('nan')
+        dz = plug_displacement(a, radius)
         print('%8.1f %12.2f %10.2f %7d %10.3f %9.3f %10.2f %8.2f %12.1f' % (
             float(t) * 1e6, dz * 1e3, nose * 1e3, failed, sum(band) / len(band) if band else float('nan'),
             max(band) if band else float('nan'), width * 1e3, width / (h_factor * dx), failure_work(a) * 1e-6))
+
+
+def plug_displacement(a, radius):
+    """The plug's axial displacement against the plate (m): the mean axial position of the plate particles
+    (body 0) within half the projectile radius of the axis against those of a ring 1.4-1.6 radii out; nan
+    when either is empty."""
+    centre, ring = [], []
+    for k, p in enumerate(a['Points']):
+        if a['body_id'][k] != 0:
+            continue
+        r = math.hypot(p[0], p[1])
+        if r < 0.5 * radius:
+            centre.append(p[2])
+        elif 1.4 * radius < r < 1.6 * radius:
+            ring.append(p[2])
+    return sum(ring) / len(ring) - sum(centre) / len(centre) if centre and ring else float('nan')
 
 
 def reference_density(a):

@@ -1,0 +1,131 @@
+#!/usr/bin/env bash
+# The mechanism check of issue 15: how the 8 mm plate fails at 190.7 m/s (F's scenario 8) at each spacing.
+# One `impactsph run` per spacing to 160 us with a frame every 4 us, then report-mechanism/report.md from
+# the runs' frames, history_plate.csv and observables.csv: nothing typed in.
+#
+#   bash cases/plate-8mm/mechanism.sh                 # the runs that are missing, then the report
+#   SPACINGS="2 1.333" bash cases/plate-8mm/mechanism.sh
+#
+# Per spacing, at the first failure (the first history row, 2 us apart, with a failed plate particle,
+# D >= 0.99) and at separation (the first row of observables.csv with a plug cut off the clamped plate,
+# common/case_observables.cpp):
+#   - the plug's displacement against the plate: the mean axial position of the plate particles within
+#     half the projectile radius of the axis against those of a ring 1.4-1.6 radii out (shear_band.py's
+#     plug_displacement), read from the frames and interpolated linearly to the event's time;
+#   - the plate's plastic work, sum m w_p over the plate (whole plate: the quarter model times 4);
+#   - the share of the energy the plate took (internal + kinetic) that is internal energy but not plastic
+#     work: the artificial viscosity's heat and the stored elastic energy, which the code does not separate.
+# The crack band's claim is that these do not depend on the spacing. Environment: BUILD_DIR (default
+# build), RUNS (default runs/mechanism-190.7), SPACINGS (mm, default "2 1.333 1"), THREADS (default 1),
+# OUT (default cases/plate-8mm/report-mechanism). A spacing whose summary.json exists is not run again. At
+# 1 mm a run takes about half an hour on one thread.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+BUILD_DIR=${BUILD_DIR:-build}
+RUNS=${RUNS:-runs/mechanism-190.7}
+SPACINGS=${SPACINGS:-"2 1.333 1"}
+THREADS=${THREADS:-1}
+OUT=${OUT:-cases/plate-8mm/report-mechanism}
+mkdir -p "$RUNS" "$OUT"
+for s in $SPACINGS; do
+  [[ -f "$RUNS/${s}mm/summary.json" ]] && continue
+  echo "mechanism: 190.7 m/s at $s mm"
+  "$BUILD_DIR/impactsph" run cases/plate-8mm/case.toml --spacing "${s}mm" --threads "$THREADS" -q \
+    --set "projectile.velocity=190.7 m/s" --set "time.end=160 us" --set "time.frame_interval=4 us" \
+    --out "$RUNS/${s}mm" > "$RUNS/${s}mm.log" 2>&1
+done
+
+python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" $SPACINGS <<'PY'
+import csv, json, math, os, re, shlex, sys
+sys.path.insert(0, 'cases/hard')
+sys.path.insert(0, 'cases/plate-8mm')
+from isolated_particles import read_vtu
+from shear_band import plug_displacement
+
+runs, out, commit, spacings = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
+radius = 10e-3  # m, the projectile's radius (case.toml: diameter 20 mm)
+
+
+def rows_of(path):
+    return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(path))]
+
+
+def first_time(rows, column):
+    """The first time (s) at which `column` is positive, or None."""
+    return next((r['time_s'] for r in rows if r[column] > 0), None)
+
+
+def frame_measures(a, multiplicity):
+    """Plug displacement (m), plate plastic work (J), plate internal and kinetic energy (J), one frame."""
+    body, mass, wp, e, v = (a[k] for k in ('body_id', 'mass', 'plastic_work', 'internal_energy', 'velocity'))
+    plate = [k for k in range(len(body)) if body[k] == 0]
+    work = sum(mass[k] * wp[k] for k in plate)
+    internal = sum(mass[k] * e[k] for k in plate)
+    kinetic = sum(0.5 * mass[k] * sum(c * c for c in v[k]) for k in plate)
+    return [plug_displacement(a, radius), multiplicity * work, multiplicity * internal, multiplicity * kinetic]
+
+
+def at(series, t):
+    """The frame measures interpolated linearly to time t (series: [(time, measures)])."""
+    for (t0, m0), (t1, m1) in zip(series, series[1:]):
+        if t0 <= t <= t1:
+            w = (t - t0) / (t1 - t0)
+            return [a + w * (b - a) for a, b in zip(m0, m1)]
+    return None
+
+
+table = []
+for s in spacings:
+    run = os.path.join(runs, s + 'mm')
+    summary = json.load(open(os.path.join(run, 'summary.json')))
+    plate = summary['bodies'][0]
+    multiplicity = round(plate['specified']['mass_kg'] / plate['initial_mass_kg'])
+    frames = re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"',
+                        open(os.path.join(run, 'particles.pvd')).read())
+    series = [(float(t), frame_measures(read_vtu(os.path.join(run, f)), multiplicity)) for t, f in frames]
+    t_fail = first_time(rows_of(os.path.join(run, 'history_plate.csv')), 'damaged_mass_fraction')
+    t_sep = first_time(rows_of(os.path.join(run, 'observables.csv')), 'plug_mass_g')
+    table.append((s, summary, t_fail, at(series, t_fail) if t_fail else None, t_sep,
+                  at(series, t_sep) if t_sep else None))
+
+
+def cell(value, fmt, ref):
+    if value is None:
+        return 'n/a'
+    return (fmt % value) + ('' if ref is None else ' (%+.1f %%)' % (100 * (value / ref - 1)))
+
+
+finest = table[-1]
+lines = ['# 8 mm plate at 190.7 m/s: the failure mechanism against the spacing', '',
+         'Generated by `bash cases/plate-8mm/mechanism.sh` at commit %s from the runs in %s (each run\'s command '
+         'line is below the table). Plug displacement: the mean axial position of the plate within half the '
+         'projectile radius of the axis against a ring 1.4-1.6 radii out, from the frames (4 us apart) '
+         'interpolated to the event. First failure: the first history row with a failed plate particle; '
+         'separation: the first row of observables.csv with a plug cut off. Plastic work and energies are the '
+         'whole plate\'s (the quarter model times 4). "Not plastic": internal energy that is not plastic work '
+         '(the artificial viscosity\'s heat and stored elastic energy), as a share of the energy the plate took '
+         '(internal + kinetic). In brackets: against the finest spacing.' % (commit, runs), '',
+         '| spacing | first failure | plug displacement there | separation | plug displacement there | plastic work '
+         'to separation | not plastic at separation | plug | residual at the end (settled at) | energy drift | wall |',
+         '|---|---|---|---|---|---|---|---|---|---|---|']
+for s, summary, t_fail, m_fail, t_sep, m_sep in table:
+    ref_fail, ref_sep = finest[3], finest[5]
+    share = m_sep and (m_sep[2] - m_sep[1]) / (m_sep[2] + m_sep[3])
+    o = summary['observables']
+    settled = o.get('settled_time', -1)
+    lines.append('| %s mm | %s | %s | %s | %s | %s | %s | %.1f g | %.1f m/s (%s) | %.3f %% | %.0f s |' % (
+        s, cell(t_fail and t_fail * 1e6, '%.0f us', None),
+        cell(m_fail and m_fail[0] * 1e3, '%.2f mm', ref_fail and ref_fail[0] * 1e3),
+        cell(t_sep and t_sep * 1e6, '%.0f us', None),
+        cell(m_sep and m_sep[0] * 1e3, '%.2f mm', ref_sep and ref_sep[0] * 1e3),
+        cell(m_sep and m_sep[1], '%.1f J', ref_sep and ref_sep[1]),
+        cell(share and 100 * share, '%.1f %%', None), 1e3 * o['plug_mass'], o['residual_velocity'],
+        '%.0f us' % (1e6 * settled) if settled > 0 else 'not settled by %.0f us' % (1e6 * summary['simulated_time_s']),
+        100 * summary['totals']['energy_drift_relative'], summary['wall_time_s']))
+lines += ['', 'Runs:', '']
+for s, summary, *_ in table:
+    lines.append('- %s mm: `%s` (%d particles, %d steps, %.1f neighbours)' % (
+        s, shlex.join(summary['command_line']), summary['particles'], summary['steps'], summary['mean_neighbours']))
+open(os.path.join(out, 'report.md'), 'w').write('\n'.join(lines) + '\n')
+print('mechanism: wrote %s/report.md' % out)
+PY
