@@ -227,11 +227,17 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
 
   bool impact_over = false;  // settled, and nothing more to come (impact_is_over), at the last row
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count(); };
+  // The time of the last history row and of the last frame, so that the forced observation at the end does
+  // not write a second row or frame at a time that has one.
+  double last_row_time = history.rows() > 0 ? history.last_time() : -1.0;
+  double last_frame_time = frames.frames().empty() ? -1.0 : frames.frames().back().time;
   auto observe = [&](bool force) {
-    const bool row = force || clock.time >= clock.next_output - time_eps;
-    const bool frame = scene.spec.output.vtu && (force || clock.time >= clock.next_frame - time_eps);
+    const bool row = (force && clock.time > last_row_time + time_eps) || clock.time >= clock.next_output - time_eps;
+    const bool frame = scene.spec.output.vtu && ((force && clock.time > last_frame_time + time_eps) ||
+                                                 clock.time >= clock.next_frame - time_eps);
     if (row || frame) stepper.copy_to_host(p);
     if (row) {
+      last_row_time = clock.time;
       if (ts.output_interval > 0)
         while (clock.next_output <= clock.time + time_eps) clock.next_output += ts.output_interval;
       const Totals totals = summarise_totals(p);
@@ -257,6 +263,7 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
       }
     }
     if (frame) {
+      last_frame_time = clock.time;
       while (clock.next_frame <= clock.time + time_eps) clock.next_frame += frame_interval;
       frames.write_frame(clock.time, clock.frame, p, scene.materials);
       ++clock.frame;
@@ -317,8 +324,10 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& opt) 
     if (progress) std::fprintf(stderr, "\n");
     // p still holds the last good state: keep it for inspection and restart.
     stepper.copy_to_host(p);
-    frames.write_frame(clock.time, clock.frame, p, scene.materials);
-    ++clock.frame;
+    if (clock.time > last_frame_time + time_eps) {  // also with output.vtu off: the state to inspect
+      frames.write_frame(clock.time, clock.frame, p, scene.materials);
+      ++clock.frame;
+    }
     save();
     throw;
   }

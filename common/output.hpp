@@ -82,6 +82,7 @@ class HistoryWriter {
   void flush() const;
 
   std::size_t rows() const { return totals_rows_.size(); }  // rows of totals.csv
+  double last_time() const { return totals_rows_.empty() ? -1.0 : totals_rows_.back()[0]; }  // s; -1: no row
   std::filesystem::path body_path(std::size_t body) const;
   std::filesystem::path totals_path() const;
 
