@@ -39,180 +39,18 @@
 #include "common/stage_setup.hpp"
 #include "common/stages.hpp"
 #include "common/verlet.hpp"
+#include "gpu/cells.hpp"
+#include "gpu/device_arrays.hpp"
 #include "gpu/launch.hpp"
+#include "gpu/phase_clock.hpp"
 #include "gpu/solver.hpp"
 
 namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND {
 
-template <class T> using DVec = thrust::device_vector<T>;
-template <class T> T* raw(DVec<T>& v) { return thrust::raw_pointer_cast(v.data()); }
 
-// Cells of half the search radius in a box; key = (cz dy + cy) dx + cx, so the cells along x are
-// contiguous and a row of five cells is one range of sorted points.
-struct Grid {
-  double lo[3];
-  double cell;
-  std::int64_t dims[3];
-  IMPACTSPH_HD std::int64_t coord(double x, int a) const {
-    const std::int64_t c = static_cast<std::int64_t>((x - lo[a]) / cell);
-    return c < 0 ? 0 : (c > dims[a] - 1 ? dims[a] - 1 : c);
-  }
-  IMPACTSPH_HD std::uint32_t key(Vec3p x) const {
-    return static_cast<std::uint32_t>((coord(x.z, 2) * dims[1] + coord(x.y, 1)) * dims[0] + coord(x.x, 0));
-  }
-};
 
-// The sorted points and their cell ranges: cell c holds the slots cell_start[c] .. cell_start[c+1].
-struct CellRange {
-  const Vec3p* x;
-  const std::int32_t* cell_start;
-  Grid grid;
-  // Calls f(j) for every sorted slot j != s in the 5x5x5 cells around the cell of slot s.
-  template <class F> IMPACTSPH_HD void for_each_candidate(std::int64_t s, F&& f) const {
-    const Vec3p xs = x[s];
-    const std::int64_t cx = grid.coord(xs.x, 0), cy = grid.coord(xs.y, 1), cz = grid.coord(xs.z, 2);
-    const std::int64_t x0 = cx - 2 < 0 ? 0 : cx - 2, x1 = cx + 2 > grid.dims[0] - 1 ? grid.dims[0] - 1 : cx + 2;
-    const std::int64_t y0 = cy - 2 < 0 ? 0 : cy - 2, y1 = cy + 2 > grid.dims[1] - 1 ? grid.dims[1] - 1 : cy + 2;
-    const std::int64_t z0 = cz - 2 < 0 ? 0 : cz - 2, z1 = cz + 2 > grid.dims[2] - 1 ? grid.dims[2] - 1 : cz + 2;
-    for (std::int64_t z = z0; z <= z1; ++z)
-      for (std::int64_t y = y0; y <= y1; ++y) {
-        const std::int64_t row = (z * grid.dims[1] + y) * grid.dims[0];  // cells along x are contiguous
-        const std::int32_t first = cell_start[row + x0], last = cell_start[row + x1 + 1];
-        for (std::int32_t j = first; j < last; ++j)
-          if (j != s) f(j);
-      }
-  }
-};
 
-struct Box {
-  Vec3p lo, hi;
-};
-struct PointBox {
-  IMPACTSPH_HD Box operator()(Vec3p x) const { return {x, x}; }
-};
-struct MergeBox {
-  IMPACTSPH_HD Box operator()(Box a, Box b) const {
-    return {{a.lo.x < b.lo.x ? a.lo.x : b.lo.x, a.lo.y < b.lo.y ? a.lo.y : b.lo.y, a.lo.z < b.lo.z ? a.lo.z : b.lo.z},
-            {a.hi.x > b.hi.x ? a.hi.x : b.hi.x, a.hi.y > b.hi.y ? a.hi.y : b.hi.y, a.hi.z > b.hi.z ? a.hi.z : b.hi.z}};
-  }
-};
-struct MinOf {
-  template <class T> IMPACTSPH_HD T operator()(T a, T b) const { return a < b ? a : b; }
-};
-struct MaxOf {
-  template <class T> IMPACTSPH_HD T operator()(T a, T b) const { return a > b ? a : b; }
-};
 
-// The pass 1 sums of a particle as plain Reals, the form IMPACTSPH_SIMD_SUMS reduces: L, L_damaged, G
-// (row-major) and the density gradient.
-constexpr int kGradientSums = 30;
-template <class Real> IMPACTSPH_HD void add_flat(Real* sum, const GradientSums<Real>& g) {
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      sum[3 * r + c] += g.L.m[r][c];
-      sum[9 + 3 * r + c] += g.L_damaged.m[r][c];
-      sum[18 + 3 * r + c] += g.G.m[r][c];
-    }
-  sum[27] += g.grad_rho.x;
-  sum[28] += g.grad_rho.y;
-  sum[29] += g.grad_rho.z;
-}
-template <class Real> IMPACTSPH_HD GradientSums<Real> unflatten_gradient_sums(const Real* sum) {
-  GradientSums<Real> g;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) {
-      g.L.m[r][c] = sum[3 * r + c];
-      g.L_damaged.m[r][c] = sum[9 + 3 * r + c];
-      g.G.m[r][c] = sum[18 + 3 * r + c];
-    }
-  g.grad_rho = Vec3<Real>{sum[27], sum[28], sum[29]};
-  return g;
-}
-
-// Wall time of the phases of a step: CUDA events on the device, the steady clock on the host.
-class PhaseClock {
- public:
-  enum Phase { Sort, TimeStep, Gather, Pass1, Pass2, Advance, Check, Finish, Count };
-  static const char* name(int p) {
-    static const char* names[Count] = {"sort", "time_step", "gather", "pass1", "pass2", "advance", "check", "finish"};
-    return names[p];
-  }
-  bool on = false;
-  // begin(p) ... end(p) around the launches of a phase (extended lambdas may not sit inside a lambda, so
-  // the passes use these); time(p, f) around a call.
-  void begin() {
-    if (!on) return;
-#if defined(__CUDACC__)
-    if (!events_) {
-      check_cuda(cudaEventCreate(&start_), "cudaEventCreate");
-      check_cuda(cudaEventCreate(&stop_), "cudaEventCreate");
-      events_ = true;
-    }
-    check_cuda(cudaEventRecord(start_), "cudaEventRecord");
-#else
-    t0_ = std::chrono::steady_clock::now();
-#endif
-  }
-  void end(Phase p) {
-    if (!on) return;
-#if defined(__CUDACC__)
-    check_cuda(cudaEventRecord(stop_), "cudaEventRecord");
-    check_cuda(cudaEventSynchronize(stop_), "cudaEventSynchronize");
-    float ms = 0;
-    check_cuda(cudaEventElapsedTime(&ms, start_, stop_), "cudaEventElapsedTime");
-    seconds[p] += 1e-3 * ms;
-#else
-    seconds[p] += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-#endif
-    ++calls[p];
-  }
-  template <class F> void time(Phase p, F&& f) {
-    begin();
-    f();
-    end(p);
-  }
-  PhaseClock() = default;
-  PhaseClock(const PhaseClock&) = delete;
-  PhaseClock& operator=(const PhaseClock&) = delete;
-  ~PhaseClock() {
-#if defined(__CUDACC__)
-    if (events_) {
-      cudaEventDestroy(start_);
-      cudaEventDestroy(stop_);
-    }
-#endif
-  }
-  double seconds[Count] = {};
-  long calls[Count] = {};
-
- private:
-#if defined(__CUDACC__)
-  bool events_ = false;
-  cudaEvent_t start_{}, stop_{};
-#else
-  std::chrono::steady_clock::time_point t0_{};
-#endif
-};
-
-template <class Real>
-struct StateArrays {
-  DVec<Vec3p> pos;
-  DVec<Vec3<Real>> vel;
-  DVec<Real> rho, energy;
-  DVec<Sym3<Real>> S;
-  void resize(std::size_t n) { pos.resize(n); vel.resize(n); rho.resize(n); energy.resize(n); S.resize(n); }
-};
-template <class Real>
-struct StateView {
-  Vec3p* pos;
-  Vec3<Real>* vel;
-  Real* rho;
-  Real* energy;
-  Sym3<Real>* S;
-};
-template <class Real> StateView<Real> view(StateArrays<Real>& s) {
-  return {raw(s.pos), raw(s.vel), raw(s.rho), raw(s.energy), raw(s.S)};
-}
 
 template <class Real>
 class Solver final : public GpuStepper {
@@ -445,166 +283,9 @@ class Solver final : public GpuStepper {
 
   // Re-sort: the reals into the order of their cells (so that neighbours are near in memory), the mirror
   // ghosts of the symmetry planes, then all points by cell key with cell ranges.
-  void sort_particles() {
-    const std::int64_t n = n_;
-    if (n == 0) return;
-    ++sorts_;
-    // Search radius: the reach at the largest h now, plus its skin (verlet_skin).
-    reach_at_sort_ = search_reach(max_smoothing_length());
-    skin_ = verlet_skin(reach_at_sort_);
-    radius_ = reach_at_sort_ + skin_;
-    const double cell = 0.5 * radius_;
-    {
-      // Key (cell, index in the scene): the order depends on the positions only, not on the order before,
-      // so a run restarted from a checkpoint sorts exactly as the run that wrote it (copy_to_host).
-      const Grid g = grid_of(y0_.pos, static_cast<std::size_t>(n), cell);
-      real_keys_.resize(static_cast<std::size_t>(n));
-      perm_.resize(static_cast<std::size_t>(n));
-      std::uint64_t* key = raw(real_keys_);
-      const Vec3p* x = raw(y0_.pos);
-      const std::int32_t* orig = raw(original_);
-      launch<kFlush>("real_keys", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-        key[i] = (static_cast<std::uint64_t>(g.key(x[i])) << 32) | static_cast<std::uint32_t>(orig[i]);
-      });
-      thrust::sequence(perm_.begin(), perm_.end());
-      thrust::sort_by_key(real_keys_.begin(), real_keys_.end(), perm_.begin());
-      DVec<Vec3p> t3p; DVec<Vec3<Real>> t3; DVec<Real> t1; DVec<Sym3<Real>> ts; DVec<std::int32_t> ti;
-      DVec<std::uint8_t> tb;
-      permute(y0_.pos, t3p); permute(y0_.vel, t3); permute(y0_.rho, t1); permute(y0_.energy, t1); permute(y0_.S, ts);
-      permute(pressure_, t1); permute(plastic_strain_, t1); permute(plastic_work_, t1); permute(damage_, t1); permute(temperature_, t1);
-      permute(bulking_, t1); permute(mass_, t1); permute(h_, t1); permute(material_, ti); permute(body_, ti); permute(fixed_, tb);
-      permute(original_, ti);
-    }
-    // Ghosts: count the images of each real, scan, fill.
-    const int planes = params_.plane_count;
-    const int masks = 1 << planes;
-    const StageParams<Real> prm = params_;
-    const double margin = radius_;
-    ghost_count_.resize(static_cast<std::size_t>(n) + 1);
-    std::int32_t* count = raw(ghost_count_);
-    const Vec3p* x = raw(y0_.pos);
-    launch<kFlush>("ghost_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      std::int32_t c = 0;
-      Vec3p sign, shift;
-      for (int m = 1; m < masks; ++m)
-        if (mirror_image(prm.planes, planes, m, x[i], margin, sign, shift)) ++c;
-      count[i] = c;
-    });
-    thrust::exclusive_scan(ghost_count_.begin(), ghost_count_.begin() + n + 1, ghost_count_.begin());
-    ghosts_ = ghost_count_[static_cast<std::size_t>(n)];
-    ghost_source_.resize(static_cast<std::size_t>(ghosts_));
-    ghost_sign_.resize(static_cast<std::size_t>(ghosts_));
-    ghost_shift_.resize(static_cast<std::size_t>(ghosts_));
-    ghost_mask_.resize(static_cast<std::size_t>(ghosts_));
-    std::int32_t* src = raw(ghost_source_);
-    std::int32_t* gmask = raw(ghost_mask_);
-    Vec3p* gsign = raw(ghost_sign_);
-    Vec3p* gshift = raw(ghost_shift_);
-    launch<kFlush>("ghost_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      std::int32_t k = count[i];
-      Vec3p sign, shift;
-      for (int m = 1; m < masks; ++m)
-        if (mirror_image(prm.planes, planes, m, x[i], margin, sign, shift)) {
-          src[k] = static_cast<std::int32_t>(i);
-          gmask[k] = m;
-          gsign[k] = sign;
-          gshift[k] = shift;
-          ++k;
-        }
-    });
-    // All points, sorted by cell key.
-    const std::int64_t total = n + ghosts_;
-    points_.resize(static_cast<std::size_t>(total));
-    Vec3p* pts = raw(points_);
-    launch<kFlush>("points", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
-      if (s < n) {
-        pts[s] = x[s];
-      } else {
-        const std::int64_t k = s - n;
-        pts[s] = hadamard(gsign[k], x[src[k]]) + gshift[k];
-      }
-    });
-    grid_ = grid_of(points_, static_cast<std::size_t>(total), cell);
-    const Grid g = grid_;
-    keys_.resize(static_cast<std::size_t>(total));
-    order_.resize(static_cast<std::size_t>(total));
-    slot_of_.resize(static_cast<std::size_t>(total));
-    std::uint32_t* key = raw(keys_);
-    launch<kFlush>("point_keys", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { key[s] = g.key(pts[s]); });
-    thrust::sequence(order_.begin(), order_.end());
-    thrust::stable_sort_by_key(keys_.begin(), keys_.end(), order_.begin());
-    const std::int32_t* order = raw(order_);
-    std::int32_t* slot = raw(slot_of_);
-    launch<kFlush>("slot_of", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { slot[order[s]] = static_cast<std::int32_t>(s); });
-    // cell_start[c] = the first sorted slot whose key is >= c, for c in [0, cells].
-    const std::int64_t cells = g.dims[0] * g.dims[1] * g.dims[2];
-    cell_start_.resize(static_cast<std::size_t>(cells) + 1);
-    std::int32_t* start = raw(cell_start_);
-    launch<kFlush>("cell_start", total + 1, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
-      const std::int64_t before = s == 0 ? -1 : static_cast<std::int64_t>(key[s - 1]);
-      const std::int64_t here = s == total ? cells : static_cast<std::int64_t>(key[s]);
-      for (std::int64_t c = before + 1; c <= here; ++c) start[c] = static_cast<std::int32_t>(s);
-    });
-    // Verlet list of each real: the sorted slots within the search radius, gathered over the 5x5x5 cells
-    // around it (count, scan, fill: no atomics), each row then ordered by the identity of its points
-    // (scene index of the real, and the planes of a ghost). A pass sums a particle's pairs in that order,
-    // which does not depend on when the lists were built: a run restarted from a checkpoint (whose first
-    // step sorts) continues with the same bits as the run that wrote it, whatever its sort schedule.
-    identity_.resize(static_cast<std::size_t>(total));
-    std::int64_t* identity = raw(identity_);
-    const std::int32_t* orig = raw(original_);
-    launch<kFlush>("point_identity", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
-      const std::int64_t pnt = order[s];
-      identity[s] = pnt < n ? static_cast<std::int64_t>(orig[pnt]) << 8
-                            : (static_cast<std::int64_t>(orig[src[pnt - n]]) << 8) | gmask[pnt - n];
-    });
-    sorted_points_.resize(static_cast<std::size_t>(total));
-    Vec3p* sp = raw(sorted_points_);
-    launch<kFlush>("sorted_points", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) { sp[s] = pts[order[s]]; });
-    list_offset_.resize(static_cast<std::size_t>(n) + 1);
-    std::int64_t* off = raw(list_offset_);
-    const double r2 = radius_ * radius_;
-    const CellRange cr{sp, start, g};
-    launch<kFlush>("list_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      const std::int64_t s = slot[i];
-      const Vec3p xs = sp[s];
-      std::int64_t c = 0;
-      cr.for_each_candidate(s, [&](std::int32_t j) {
-        if (norm2(xs - sp[j]) < r2) ++c;
-      });
-      off[i] = c;
-    });
-    thrust::exclusive_scan(list_offset_.begin(), list_offset_.end(), list_offset_.begin());
-    list_.resize(static_cast<std::size_t>(list_offset_[static_cast<std::size_t>(n)]));
-    std::int32_t* list = raw(list_);
-    launch<kFlush>("list_fill", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      const std::int64_t s = slot[i];
-      const Vec3p xs = sp[s];
-      const std::int64_t first = off[i];
-      std::int64_t k = first;
-      cr.for_each_candidate(s, [&](std::int32_t j) {
-        if (norm2(xs - sp[j]) < r2) list[k++] = j;
-      });
-      for (std::int64_t a = first + 1; a < k; ++a) {  // insertion sort by identity: rows are short
-        const std::int32_t j = list[a];
-        const std::int64_t id = identity[j];
-        std::int64_t b = a;
-        for (; b > first && identity[list[b - 1]] > id; --b) list[b] = list[b - 1];
-        list[b] = j;
-      }
-    });
-    thrust::copy(y0_.pos.begin(), y0_.pos.end(), pos_at_sort_.begin());
-    const std::size_t t = static_cast<std::size_t>(total);
-    wx_.resize(t); wv_.resize(t); wrho_.resize(t); wp_.resize(t); wc_.resize(t); wm_.resize(t); wh_.resize(t);
-    wvol_.resize(t); wA_.resize(t); wS_.resize(t); wmat_.resize(t); wbody_.resize(t); wdamage_.resize(t);
-    wlinv_.resize(t); wgrad_rho_.resize(t); wav_.resize(t); wR_.resize(params_.art.on() ? t : 0);
-    wgv_.resize(params_.visc.limited ? t : 0);
-    wlet_go_.resize(t); wimage_walls_.resize(t);
-    sorted_ = true;
-    stats_.ghosts = static_cast<std::size_t>(ghosts_);
-  }
+  void sort_particles();
 
-  // Raw pointers to the work arrays (sorted slots, reals and ghosts), captured by the pass kernels.
+
   // The work arrays by sorted slot, as the stages (common/stages.hpp) read them.
   StagePoints<Real> points() {
     return {raw(wx_), raw(wv_), raw(wrho_), raw(wp_), raw(wc_), raw(wm_), raw(wh_), raw(wvol_), raw(wdamage_),
@@ -623,140 +304,8 @@ class Solver final : public GpuStepper {
   // neighbour to the next are sums, kept as arrays of Reals; penalty contact, rare and heavy, has a loop of
   // its own after the SPH pairs (its sums in the same list order as before).
   template <KernelKind K>
-  void evaluate_with(StateArrays<Real>& state, double dt_in) {
-    const std::int64_t n = n_, total = n_ + ghosts_;
-    const StateView<Real> y = view(state);
-    const StagePoints<Real> w = points();
-    const FixedKernel<K> kernel{};
-    const std::int64_t* list_offset = raw(list_offset_);  // Verlet list of real i: slots list[list_offset[i] ..
-    const std::int32_t* list = raw(list_);                 // list_offset[i+1])
-    const MaterialParams<Real>* mats = raw(materials_);
-    const StageParams<Real> prm = params_;
-    const Real dt = static_cast<Real>(dt_in);
-    const std::int32_t* order = raw(order_);
-    const std::int32_t* slot = raw(slot_of_);
-    const std::int32_t* gsrc = raw(ghost_source_);
-    const std::int32_t* gmask = raw(ghost_mask_);
-    const Vec3p* gsign = raw(ghost_sign_);
-    const Vec3p* gshift = raw(ghost_shift_);
-    const Real* mass = raw(mass_);
-    const Real* h = raw(h_);
-    const Real* damage = raw(damage_);
-    const Real* bulking = raw(bulking_);
-    const std::int32_t* material = raw(material_);
-    const std::int32_t* body = raw(body_);
-    const std::uint8_t* fixed = raw(fixed_);
+  void evaluate_with(StateArrays<Real>& state, double dt_in);
 
-    // Work arrays in sorted order: reals from the state, ghosts as mirror images of their source
-    // (gather_point, stages.hpp).
-    clock_.begin();
-    launch<kFlush>("gather", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
-      const std::int64_t pnt = order[s];
-      const std::int64_t i = pnt < n ? pnt : gsrc[pnt - n];
-      const std::int32_t mi = material[i];
-      const GatheredPoint<Real> g = gather_point(mats[mi], y.rho[i], y.energy[i], bulking[i], damage[i], y.S[i]);
-      Sym3<Real> S = g.S;
-      Vec3p xs = y.pos[i];
-      Vec3<Real> vs = y.vel[i];
-      Real m = mass[i];
-      const unsigned let_go = walls_let_go(prm.planes, prm.plane_count, S, g.P, vs);
-      unsigned image_walls = 0;
-      if (pnt >= n) {
-        image_walls = static_cast<unsigned>(gmask[pnt - n]) & prm.wall_planes;
-        if (image_walls & let_go) m = 0;  // its source let go of a wall it is mirrored through
-        const Vec3p sg = gsign[pnt - n];
-        xs = hadamard(sg, xs) + gshift[pnt - n];
-        const Vec3<Real> sr = cast3<Real>(sg);
-        vs = hadamard(sr, vs);
-        S = mirror(S, sr);
-      }
-      const Real rho = y.rho[i];
-      w.x[s] = xs; w.v[s] = vs; w.rho[s] = rho; w.p[s] = g.P; w.c[s] = g.c; w.m[s] = m; w.h[s] = h[i];
-      w.mat[s] = mi; w.body[s] = body[i]; w.damage[s] = g.pair_damage;
-      w.S[s] = S;
-      w.let_go[s] = pnt < n ? let_go : 0u;
-      w.image_walls[s] = image_walls;
-      w.vol[s] = m / rho;
-      w.A[s] = stress_over_rho2(S, g.P, rho);
-      if (prm.art.on()) w.R[s] = artificial_stress(prm.art, w.A[s]);  // before any viscosity joins A
-    });
-
-    clock_.end(PhaseClock::Gather);
-
-    // Pass 1 (stages.hpp): each real's gradients from its list, then the ghosts' mirrored from their sources.
-    clock_.begin();
-    Mat3<Real>* grad_v = raw(grad_v_);
-    std::int32_t* fell = raw(fallback_);
-    std::int32_t* ncount = raw(neighbour_count_);
-    launch<kFlush>("pass1", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      const std::int64_t s = slot[i];
-      const GradientRow<Real> row = gradient_row(w, mats, s);
-      Real sum[kGradientSums] = {};
-      std::int32_t count = 0;
-      const std::int64_t k0 = list_offset[i], k1 = list_offset[i + 1];
-      IMPACTSPH_SIMD_SUMS(count, sum[:kGradientSums])
-      for (std::int64_t k = k0; k < k1; ++k) {
-        GradientSums<Real> one = GradientSums<Real>::zero();
-        if (add_gradient_neighbour(kernel, w, mats, row, list[k], one)) {
-          ++count;
-          add_flat(sum, one);
-        }
-      }
-      const CorrectedGradients<Real> cg = finish_gradient_row(prm, w, s, unflatten_gradient_sums(sum));
-      grad_v[i] = cg.grad_v;
-      fell[i] = cg.fell_back ? 1 : 0;
-      ncount[i] = count;
-    });
-    launch<kFlush>("ghost_pass1", ghosts_, [=] IMPACTSPH_LAMBDA(std::int64_t k) {
-      mirror_gradient_row(prm, w, slot[n + k], slot[gsrc[k]], cast3<Real>(gsign[k]));
-    });
-    stats_.correction_fallbacks =
-        static_cast<std::size_t>(thrust::reduce(fallback_.begin(), fallback_.begin() + n, std::int64_t(0)));
-    clock_.end(PhaseClock::Pass1);
-    stats_.mean_neighbours =
-        n ? static_cast<double>(thrust::reduce(neighbour_count_.begin(), neighbour_count_.begin() + n, std::int64_t(0))) /
-                static_cast<double>(n)
-          : 0.0;
-
-    // Pass 2 (stages.hpp): the SPH pairs in a loop whose only carried values are sums (IMPACTSPH_SIMD_SUMS,
-    // launch.hpp), then penalty contact, rare and heavy, in a loop of its own (its sums in list order), then
-    // the rates.
-    clock_.begin();
-    Vec3<Real>* rpos = raw(rate_pos_);
-    Vec3<Real>* racc = raw(rate_acc_);
-    Real* rdrho = raw(rate_drho_);
-    Real* rde = raw(rate_de_);
-    Sym3<Real>* rS = raw(rate_S_);
-    Real* reps = raw(strain_rate_);
-    Real* rcp = raw(contact_power_);
-    launch<kFlush>("pass2", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      const std::int64_t s = slot[i];
-      const RateRow<Real> row = rate_row(prm, w, mats, s);
-      const std::int64_t k0 = list_offset[i], k1 = list_offset[i + 1];
-      Real sum[5] = {};  // acceleration x, y, z; energy rate; delta-SPH diffusion
-      IMPACTSPH_SIMD_SUMS(sum[:5])
-      for (std::int64_t k = k0; k < k1; ++k) {
-        Vec3<Real> acc{0, 0, 0};
-        Real de = 0, diffusion = 0;
-        if (add_rate_neighbour(kernel, prm, w, mats, row, list[k], acc, de, diffusion)) {
-          sum[0] += acc.x;
-          sum[1] += acc.y;
-          sum[2] += acc.z;
-          sum[3] += de;
-          sum[4] += diffusion;
-        }
-      }
-      Vec3<Real> contact{0, 0, 0};
-      Real power = 0;
-      if (w.in_penalty_contact(row.body))
-        for (std::int64_t k = k0; k < k1; ++k) add_contact_neighbour(w, mats, row, list[k], dt, contact, power);
-      const PointRates<Real> r = point_rates(prm, w, mats[row.mat], s, grad_v[i], Vec3<Real>{sum[0], sum[1], sum[2]},
-                                             sum[3], sum[4], contact, power, fixed[i] != 0);
-      rpos[i] = r.vel; racc[i] = r.acc; rdrho[i] = r.drho; rde[i] = r.de; rS[i] = r.dS; reps[i] = r.strain_rate;
-      rcp[i] = r.contact_power;
-    });
-    clock_.end(PhaseClock::Pass2);
-  }
 
   // y = y0 + dt f (advance_point, stages.hpp).
   void advance(StateArrays<Real>& from, double dt_in, StateArrays<Real>& to, bool record) {
@@ -909,6 +458,13 @@ class Solver final : public GpuStepper {
   StepStats stats_;
   PhaseClock clock_;
 };
+
+}  // namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND
+
+#include "gpu/solver_passes.hpp"
+#include "gpu/solver_sort.hpp"
+
+namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND {
 
 inline std::unique_ptr<GpuStepper> make_solver_for(const Scene& scene, Precision precision, const char* build) {
   if (precision == Precision::Double) return std::make_unique<Solver<double>>(scene, build);
