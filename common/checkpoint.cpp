@@ -28,11 +28,10 @@ static_assert(sizeof(Vec3d) == 3 * sizeof(double) && std::is_trivially_copyable_
 static_assert(sizeof(Sym3d) == 6 * sizeof(double) && std::is_trivially_copyable_v<Sym3d>);
 static_assert(std::is_trivially_copyable_v<RunClock>);
 
-// Every ParticleSet array in file order; one list for writing and reading keeps them in step.
+// Every ParticleSet array in file order (for_each_field, the order of IMPACTSPH_PARTICLE_FIELDS).
 template <class Set, class F>
 void for_each_array(Set& p, F&& f) {
-  f(p.pos); f(p.vel); f(p.mass); f(p.rho); f(p.energy); f(p.pressure); f(p.h); f(p.dev_stress);
-  f(p.plastic_strain); f(p.plastic_work); f(p.damage); f(p.temperature); f(p.bulking_pressure); f(p.body); f(p.material); f(p.fixed);
+  for_each_field(p, [&](const FieldInfo&, auto& a) { f(a); });
 }
 
 std::uint64_t bytes_per_particle() {

@@ -241,24 +241,20 @@ void FrameSeriesWriter::write_frame(double time, std::int64_t index, const Parti
     point_data += tag("Float64", name, 1, data.add(v.data(), n));
   };
 
+  // Every field with a VTU name, as stored (for_each_field); then the speed and the von Mises stress.
   // Vec3d is three packed doubles, so the arrays go out as they are.
   static_assert(sizeof(Vec3d) == 3 * sizeof(double));
-  point_data += tag("Float64", "velocity", 3, data.add(p.vel.data(), n));
+  for_each_field(p, [&](const FieldInfo& f, const auto& a) {
+    using T = typename std::decay_t<decltype(a)>::value_type;
+    if (!*f.vtu_name) return;
+    if constexpr (std::is_same_v<T, Vec3d>) point_data += tag("Float64", f.vtu_name, 3, data.add(a.data(), n));
+    else if constexpr (std::is_same_v<T, double>) point_data += tag("Float64", f.vtu_name, 1, data.add(a.data(), n));
+    else if constexpr (std::is_same_v<T, std::int32_t>) point_data += tag("Int32", f.vtu_name, 1, data.add(a.data(), n));
+    else if constexpr (std::is_same_v<T, std::uint8_t>) point_data += tag("UInt8", f.vtu_name, 1, data.add(a.data(), n));
+    else throw std::logic_error(std::string(f.name) + ": a field with a VTU name needs its VTU type in write_frame");
+  });
   scalar("speed", [&](std::size_t i) { return norm(p.vel[i]); });
-  point_data += tag("Float64", "density", 1, data.add(p.rho.data(), n));
-  point_data += tag("Float64", "pressure", 1, data.add(p.pressure.data(), n));
   scalar("von_mises", [&](std::size_t i) { return von_mises(p.dev_stress[i]); });
-  point_data += tag("Float64", "plastic_strain", 1, data.add(p.plastic_strain.data(), n));
-  point_data += tag("Float64", "plastic_work", 1, data.add(p.plastic_work.data(), n));
-  point_data += tag("Float64", "damage", 1, data.add(p.damage.data(), n));
-  point_data += tag("Float64", "temperature", 1, data.add(p.temperature.data(), n));
-  point_data += tag("Float64", "bulking_pressure", 1, data.add(p.bulking_pressure.data(), n));
-  point_data += tag("Float64", "internal_energy", 1, data.add(p.energy.data(), n));
-  point_data += tag("Float64", "smoothing_length", 1, data.add(p.h.data(), n));
-  point_data += tag("Float64", "mass", 1, data.add(p.mass.data(), n));
-  point_data += tag("Int32", "body_id", 1, data.add(p.body.data(), n));
-  point_data += tag("Int32", "material_id", 1, data.add(p.material.data(), n));
-  point_data += tag("UInt8", "fixed", 1, data.add(p.fixed.data(), n));
 
   const std::uint64_t points_offset = data.add(p.pos.data(), n);
   std::vector<std::int64_t> ids(n);

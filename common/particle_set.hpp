@@ -13,6 +13,40 @@ using Vec3d = Vec3<double>;
 using Sym3d = Sym3<double>;
 using Mat3d = Mat3<double>;
 
+// Every per-particle array of a ParticleSet, once: X(member, vtu_name, kind) in the checkpoint's order.
+// vtu_name is the array's name in the VTU frames ("" for one written otherwise: the positions are the
+// points, the stress is written as its von Mises value); kind says how the gpu port keeps it:
+//   Position: double in both precisions;  Evolving: the port's precision, copied back to the host;
+//   Constant: never changed by a step (not copied back).
+// A new field is one line here, its comment in ParticleSet, and the code that gives it a meaning: resize,
+// the checkpoint, the VTU frames and the port's upload, download and permute take it from this list.
+#define IMPACTSPH_PARTICLE_FIELDS(X)                        \
+  X(pos, "", Position)                                      \
+  X(vel, "velocity", Evolving)                              \
+  X(mass, "mass", Constant)                                 \
+  X(rho, "density", Evolving)                               \
+  X(energy, "internal_energy", Evolving)                    \
+  X(pressure, "pressure", Evolving)                         \
+  X(h, "smoothing_length", Evolving)                        \
+  X(dev_stress, "", Evolving)                               \
+  X(plastic_strain, "plastic_strain", Evolving)             \
+  X(plastic_work, "plastic_work", Evolving)                 \
+  X(damage, "damage", Evolving)                             \
+  X(temperature, "temperature", Evolving)                   \
+  X(bulking_pressure, "bulking_pressure", Evolving)         \
+  X(body, "body_id", Constant)                              \
+  X(material, "material_id", Constant)                      \
+  X(fixed, "fixed", Constant)
+
+enum class FieldKind { Position, Evolving, Constant };
+
+// What for_each_field tells of a field besides its array.
+struct FieldInfo {
+  const char* name;      // the member's name
+  const char* vtu_name;  // "" when the VTU frames write it otherwise
+  FieldKind kind;
+};
+
 struct ParticleSet {
   std::vector<Vec3d> pos;             // m
   std::vector<Vec3d> vel;             // m/s
@@ -32,12 +66,26 @@ struct ParticleSet {
   std::vector<std::uint8_t> fixed;    // 1: clamped (velocity held at zero)
 
   std::size_t size() const { return pos.size(); }
-  void resize(std::size_t n) {
-    pos.resize(n); vel.resize(n); mass.resize(n); rho.resize(n); energy.resize(n); pressure.resize(n);
-    h.resize(n); dev_stress.resize(n); plastic_strain.resize(n); plastic_work.resize(n); damage.resize(n);
-    temperature.resize(n); bulking_pressure.resize(n); body.resize(n);
-    material.resize(n); fixed.resize(n);
-  }
+  void resize(std::size_t n);
 };
+
+// f(info, array) for every field of a ParticleSet, or of any set with the same members (the gpu port's
+// device arrays), in the order of IMPACTSPH_PARTICLE_FIELDS.
+template <class Set, class F> void for_each_field(Set& p, F&& f) {
+#define IMPACTSPH_VISIT_FIELD(member, vtu, kind) f(FieldInfo{#member, vtu, FieldKind::kind}, p.member);
+  IMPACTSPH_PARTICLE_FIELDS(IMPACTSPH_VISIT_FIELD)
+#undef IMPACTSPH_VISIT_FIELD
+}
+
+// f(info, a_array, b_array) for every field of two sets, in the same order.
+template <class A, class B, class F> void for_each_field_pair(A& a, B& b, F&& f) {
+#define IMPACTSPH_VISIT_FIELD_PAIR(member, vtu, kind) f(FieldInfo{#member, vtu, FieldKind::kind}, a.member, b.member);
+  IMPACTSPH_PARTICLE_FIELDS(IMPACTSPH_VISIT_FIELD_PAIR)
+#undef IMPACTSPH_VISIT_FIELD_PAIR
+}
+
+inline void ParticleSet::resize(std::size_t n) {
+  for_each_field(*this, [n](const FieldInfo&, auto& a) { a.resize(n); });
+}
 
 }  // namespace impactsph

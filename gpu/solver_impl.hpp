@@ -24,6 +24,7 @@
 #include <thrust/fill.h>
 #include <thrust/gather.h>
 #include <thrust/reduce.h>
+#include <thrust/scatter.h>
 #include <thrust/scan.h>
 #include <thrust/sequence.h>
 #include <thrust/sort.h>
@@ -56,7 +57,6 @@ template <class Real>
 class Solver final : public GpuStepper {
  public:
   static constexpr bool kFlush = sizeof(Real) < sizeof(double);  // float: subnormals to zero (launch.hpp)
-  static constexpr int kHostScalars = 9;  // scalar fields copied back to the host (download)
   Solver(const Scene& scene, const char* build) : numerics_(scene.spec.numerics) {
     const bool dbl = sizeof(Real) == sizeof(double);
     name_ = std::string("gpu port (") + (dbl ? "double" : "float") + ", " + build + ")";
@@ -89,10 +89,10 @@ class Solver final : public GpuStepper {
     if (!resident_) upload(p);
     const std::int64_t n = n_;
     Real* out = raw(scratch_real_);
-    const StateView<Real> y = view(y0_);
+    const StateView<Real> y = state_view(d_);
     const MaterialParams<Real>* mats = raw(materials_);
-    const Real* h = raw(h_);
-    const std::int32_t* mat = raw(material_);
+    const Real* h = raw(d_.h);
+    const std::int32_t* mat = raw(d_.material);
     const Real cfl = params_.cfl;
     clock_.begin();
     // F eq 5.1 per particle, then the minimum (an exact reduction: the same in any order).
@@ -113,47 +113,19 @@ class Solver final : public GpuStepper {
     download(p);
   }
 
-  // The device state into p, in the scene's order.
+  // The device state into p, in the scene's order: every field a step changes (FieldKind::Constant ones
+  // are as uploaded), scattered by `original`, widened to double.
   void download(ParticleSet& p) {
-    const std::int64_t n = n_;
-    const StateView<Real> y = view(y0_);
-    const std::int32_t* orig = raw(original_);
-    Vec3d* pos = raw(out_vec_[0]);
-    Vec3d* vel = raw(out_vec_[1]);
-    Sym3d* S = raw(out_sym_);
-    double* f = raw(out_scalar_);
-    const Real* P = raw(pressure_);
-    const Real* eps = raw(plastic_strain_);
-    const Real* D = raw(damage_);
-    const Real* T = raw(temperature_);
-    const Real* B = raw(bulking_);
-    const Real* H = raw(h_);
-    const Real* W = raw(plastic_work_);
-    // Scatter into the scene's order, widened to double.
-    launch<kFlush>("copy_to_host", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-      const std::int64_t o = orig[i];
-      pos[o] = y.pos[i];
-      vel[o] = cast3<double>(y.vel[i]);
-      const Sym3<Real> s = y.S[i];
-      S[o] = Sym3d{double(s.xx), double(s.yy), double(s.zz), double(s.xy), double(s.yz), double(s.zx)};
-      f[o] = y.rho[i];
-      f[n + o] = y.energy[i];
-      f[2 * n + o] = P[i];
-      f[3 * n + o] = eps[i];
-      f[4 * n + o] = D[i];
-      f[5 * n + o] = T[i];
-      f[6 * n + o] = B[i];
-      f[7 * n + o] = H[i];
-      f[8 * n + o] = W[i];
+    for_each_field_pair(p, d_, [&](const FieldInfo& f, auto& host, const auto& dev) {
+      if (f.kind == FieldKind::Constant) return;
+      using D = typename std::decay_t<decltype(dev)>::value_type;
+      using H = typename std::decay_t<decltype(host)>::value_type;
+      DVec<D> in_scene_order(dev.size());
+      thrust::scatter(dev.begin(), dev.end(), original_.begin(), in_scene_order.begin());
+      std::vector<D> staged(dev.size());
+      thrust::copy(in_scene_order.begin(), in_scene_order.end(), staged.begin());
+      for (std::size_t i = 0; i < staged.size(); ++i) host[i] = to_host<H>(staged[i]);
     });
-    thrust::copy(out_vec_[0].begin(), out_vec_[0].end(), p.pos.begin());
-    thrust::copy(out_vec_[1].begin(), out_vec_[1].end(), p.vel.begin());
-    thrust::copy(out_sym_.begin(), out_sym_.end(), p.dev_stress.begin());
-    std::vector<double>* fields[kHostScalars] = {&p.rho,    &p.energy,      &p.pressure,         &p.plastic_strain,
-                                                 &p.damage, &p.temperature, &p.bulking_pressure, &p.h,
-                                                 &p.plastic_work};
-    for (int k = 0; k < kHostScalars; ++k)
-      thrust::copy(out_scalar_.begin() + k * n, out_scalar_.begin() + (k + 1) * n, fields[k]->begin());
   }
 
   void step(ParticleSet& p, double dt) override {
@@ -167,50 +139,28 @@ class Solver final : public GpuStepper {
     if (!sorted_ || !verlet_list_holds(max_displacement(), dt, vmax, growth, skin_))
       clock_.time(PhaseClock::Sort, [&] { sort_particles(); });
 
-    evaluate(y0_, dt);
-    clock_.time(PhaseClock::Advance, [&] { advance(y0_, 0.5 * dt, y_half_, false); });
-    evaluate(y_half_, dt);
-    clock_.time(PhaseClock::Advance, [&] { advance(y0_, dt, y1_, true); });
+    evaluate(state_view(d_), dt);
+    clock_.time(PhaseClock::Advance, [&] { advance(state_view(d_), 0.5 * dt, view(y_half_), false); });
+    evaluate(view(y_half_), dt);
+    clock_.time(PhaseClock::Advance, [&] { advance(state_view(d_), dt, view(y1_), true); });
     clock_.time(PhaseClock::Check, [&] { check_state(dt); });
     stats_.contact_work = dt * contact_power_sum();
-    std::swap(y0_, y1_);
+    swap_state(d_, y1_);
     clock_.time(PhaseClock::Finish, [&] { finish(dt); });
     if (!defer_) download(p);
   }
 
  // The rest is public only because nvcc's extended (device) lambdas may not live in private members.
-  template <class T> static void upload_converted(const std::vector<double>& src, DVec<T>& dst) {
-    std::vector<T> tmp(src.begin(), src.end());
-    dst = tmp;
-  }
-
   void upload(const ParticleSet& p) {
     const std::size_t n = p.size();
     n_ = static_cast<std::int64_t>(n);
-    y0_.resize(n); y_half_.resize(n); y1_.resize(n);
-    y0_.pos = p.pos;
-    std::vector<Vec3<Real>> vel(n);
-    std::vector<Sym3<Real>> S(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      vel[i] = cast3<Real>(p.vel[i]);
-      const Sym3d& s = p.dev_stress[i];
-      S[i] = Sym3<Real>{Real(s.xx), Real(s.yy), Real(s.zz), Real(s.xy), Real(s.yz), Real(s.zx)};
-    }
-    y0_.vel = vel;
-    y0_.S = S;
-    upload_converted(p.rho, y0_.rho);
-    upload_converted(p.energy, y0_.energy);
-    upload_converted(p.pressure, pressure_);
-    upload_converted(p.plastic_strain, plastic_strain_);
-    upload_converted(p.plastic_work, plastic_work_);
-    upload_converted(p.damage, damage_);
-    upload_converted(p.temperature, temperature_);
-    upload_converted(p.bulking_pressure, bulking_);
-    upload_converted(p.mass, mass_);
-    upload_converted(p.h, h_);
-    material_ = p.material;
-    body_ = p.body;
-    fixed_ = p.fixed;
+    y_half_.resize(n); y1_.resize(n);
+    for_each_field_pair(p, d_, [](const FieldInfo&, const auto& host, auto& dev) {
+      using D = typename std::decay_t<decltype(dev)>::value_type;
+      std::vector<D> staged(host.size());
+      for (std::size_t i = 0; i < host.size(); ++i) staged[i] = to_device<D>(host[i]);
+      dev = staged;
+    });
     original_.resize(n);
     thrust::sequence(original_.begin(), original_.end());
     for (DVec<Real>* a : {&rate_drho_, &rate_de_, &strain_rate_, &contact_power_, &d_eps_p_, &d_plastic_work_,
@@ -218,7 +168,6 @@ class Solver final : public GpuStepper {
       a->resize(n);
     rate_pos_.resize(n); rate_acc_.resize(n); rate_S_.resize(n); grad_v_.resize(n);
     fallback_.resize(n); neighbour_count_.resize(n); pos_at_sort_.resize(n);
-    out_vec_[0].resize(n); out_vec_[1].resize(n); out_sym_.resize(n); out_scalar_.resize(kHostScalars * n);
     sorted_ = false;
     resident_ = true;
   }
@@ -240,18 +189,18 @@ class Solver final : public GpuStepper {
   }
 
   double max_smoothing_length() {
-    return static_cast<double>(thrust::reduce(h_.begin(), h_.begin() + n_, Real(0), MaxOf{}));
+    return static_cast<double>(thrust::reduce(d_.h.begin(), d_.h.begin() + n_, Real(0), MaxOf{}));
   }
 
   double max_speed() {
-    const StateView<Real> y = view(y0_);
+    const StateView<Real> y = state_view(d_);
     Real* out = raw(scratch_real_);
     launch<kFlush>("speed", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = norm(y.vel[i]); });
     return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n_, Real(0), MaxOf{}));
   }
 
   double max_displacement() {
-    const Vec3p* x = raw(y0_.pos);
+    const Vec3p* x = raw(d_.pos);
     const Vec3p* x0 = raw(pos_at_sort_);
     Real* out = raw(scratch_real_);
     launch<kFlush>("displacement", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = static_cast<Real>(norm(x[i] - x0[i])); });
@@ -275,8 +224,8 @@ class Solver final : public GpuStepper {
   }
 
   // Permutes every per-particle array of the reals by `perm` (new i <- old perm[i]).
-  template <class T> void permute(DVec<T>& a, DVec<T>& tmp) {
-    tmp.resize(a.size());
+  template <class T> void permute(DVec<T>& a) {
+    DVec<T> tmp(a.size());
     thrust::gather(perm_.begin(), perm_.end(), a.begin(), tmp.begin());
     a.swap(tmp);
   }
@@ -294,7 +243,7 @@ class Solver final : public GpuStepper {
             raw(wgrad_rho_), raw(contacts_), params_.body_count};
   }
 
-  void evaluate(StateArrays<Real>& state, double dt_in) {
+  void evaluate(const StateView<Real>& state, double dt_in) {
     if (params_.kernel == KernelKind::WendlandC2) evaluate_with<KernelKind::WendlandC2>(state, dt_in);
     else evaluate_with<KernelKind::CubicSpline>(state, dt_in);
   }
@@ -304,12 +253,11 @@ class Solver final : public GpuStepper {
   // neighbour to the next are sums, kept as arrays of Reals; penalty contact, rare and heavy, has a loop of
   // its own after the SPH pairs (its sums in the same list order as before).
   template <KernelKind K>
-  void evaluate_with(StateArrays<Real>& state, double dt_in);
+  void evaluate_with(const StateView<Real>& state, double dt_in);
 
 
   // y = y0 + dt f (advance_point, stages.hpp).
-  void advance(StateArrays<Real>& from, double dt_in, StateArrays<Real>& to, bool record) {
-    const StateView<Real> y0 = view(from), out = view(to);
+  void advance(const StateView<Real>& y0, double dt_in, const StateView<Real>& out, bool record) {
     const MaterialParams<Real>* mats = raw(materials_);
     const StageParams<Real> prm = params_;
     const Real dt = static_cast<Real>(dt_in);
@@ -320,11 +268,11 @@ class Solver final : public GpuStepper {
     const Real* rde = raw(rate_de_);
     const Sym3<Real>* rS = raw(rate_S_);
     const Real* reps = raw(strain_rate_);
-    const Real* eps_p = raw(plastic_strain_);
-    const Real* T = raw(temperature_);
-    const Real* D = raw(damage_);
-    const Real* bulking = raw(bulking_);
-    const std::int32_t* material = raw(material_);
+    const Real* eps_p = raw(d_.plastic_strain);
+    const Real* T = raw(d_.temperature);
+    const Real* D = raw(d_.damage);
+    const Real* bulking = raw(d_.bulking_pressure);
+    const std::int32_t* material = raw(d_.material);
     Real* h_eps = raw(d_eps_p_);
     Real* h_work = raw(d_plastic_work_);
     Real* h_T = raw(d_temperature_);
@@ -354,17 +302,17 @@ class Solver final : public GpuStepper {
   // X eq 28), and the variable smoothing length (X eqs 9-10) from the velocity gradient of the last
   // evaluation.
   void finish(double dt_in) {
-    const StateView<Real> y = view(y0_);
+    const StateView<Real> y = state_view(d_);
     const MaterialParams<Real>* mats = raw(materials_);
-    const std::int32_t* material = raw(material_);
-    Real* eps_p = raw(plastic_strain_);
-    Real* work = raw(plastic_work_);
-    Real* T = raw(temperature_);
-    Real* D = raw(damage_);
-    Real* P = raw(pressure_);
-    Real* bulking = raw(bulking_);
-    Real* h = raw(h_);
-    const std::int32_t* body = raw(body_);
+    const std::int32_t* material = raw(d_.material);
+    Real* eps_p = raw(d_.plastic_strain);
+    Real* work = raw(d_.plastic_work);
+    Real* T = raw(d_.temperature);
+    Real* D = raw(d_.damage);
+    Real* P = raw(d_.pressure);
+    Real* bulking = raw(d_.bulking_pressure);
+    Real* h = raw(d_.h);
+    const std::int32_t* body = raw(d_.body);
     const BodySmoothing<Real>* smoothing = raw(body_smoothing_);
     const Mat3<Real>* grad_v = raw(grad_v_);
     const Real dt = static_cast<Real>(dt_in);
@@ -398,7 +346,7 @@ class Solver final : public GpuStepper {
     const Vec3p x = y1_.pos[i];
     const Vec3<Real> v = y1_.vel[i];
     const Sym3<Real> S = y1_.S[i];
-    const std::int32_t b = body_[i];
+    const std::int32_t b = d_.body[i];
     throw particle_diverged(dt, static_cast<long long>(o), body_names_[static_cast<std::size_t>(b)], {x.x, x.y, x.z},
                             {v.x, v.y, v.z}, Real(y1_.rho[i]), Real(y1_.energy[i]), von_mises(S));
   }
@@ -420,10 +368,9 @@ class Solver final : public GpuStepper {
   std::int64_t n_ = 0, ghosts_ = 0;
 
   // Real particles, in the order of the last sort (original_ maps to the scene's order).
-  StateArrays<Real> y0_, y_half_, y1_;
-  DVec<Real> pressure_, plastic_strain_, plastic_work_, damage_, temperature_, bulking_, mass_, h_;
-  DVec<std::int32_t> material_, body_, original_;
-  DVec<std::uint8_t> fixed_;
+  DeviceParticles<Real> d_;         // the fields of ParticleSet, the state of the step start among them
+  StateArrays<Real> y_half_, y1_;   // the midpoint and the step end
+  DVec<std::int32_t> original_;
   DVec<Vec3p> pos_at_sort_;
   // Rates of an evaluation and the history of the final stage.
   DVec<Vec3<Real>> rate_pos_, rate_acc_;
@@ -451,10 +398,6 @@ class Solver final : public GpuStepper {
   DVec<std::int32_t> wmat_, wbody_;
   DVec<unsigned> wlet_go_, wimage_walls_;
   DVec<Mat3<Real>> wlinv_, wgv_;
-  // Copies back to the host, in the scene's order.
-  DVec<Vec3d> out_vec_[2];
-  DVec<Sym3d> out_sym_;
-  DVec<double> out_scalar_;
   StepStats stats_;
   PhaseClock clock_;
 };

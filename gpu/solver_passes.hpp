@@ -37,9 +37,9 @@ template <class Real> IMPACTSPH_HD GradientSums<Real> unflatten_gradient_sums(co
 // its own after the SPH pairs (its sums in the same list order as before).
 template <class Real>
 template <KernelKind K>
-void Solver<Real>::evaluate_with(StateArrays<Real>& state, double dt_in) {
+void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
   const std::int64_t n = n_, total = n_ + ghosts_;
-  const StateView<Real> y = view(state);
+  const StateView<Real> y = state;
   const StagePoints<Real> w = points();
   const FixedKernel<K> kernel{};
   const std::int64_t* list_offset = raw(list_offset_);  // Verlet list of real i: slots list[list_offset[i] ..
@@ -53,13 +53,13 @@ void Solver<Real>::evaluate_with(StateArrays<Real>& state, double dt_in) {
   const std::int32_t* gmask = raw(ghost_mask_);
   const Vec3p* gsign = raw(ghost_sign_);
   const Vec3p* gshift = raw(ghost_shift_);
-  const Real* mass = raw(mass_);
-  const Real* h = raw(h_);
-  const Real* damage = raw(damage_);
-  const Real* bulking = raw(bulking_);
-  const std::int32_t* material = raw(material_);
-  const std::int32_t* body = raw(body_);
-  const std::uint8_t* fixed = raw(fixed_);
+  const Real* mass = raw(d_.mass);
+  const Real* h = raw(d_.h);
+  const Real* damage = raw(d_.damage);
+  const Real* bulking = raw(d_.bulking_pressure);
+  const std::int32_t* material = raw(d_.material);
+  const std::int32_t* body = raw(d_.body);
+  const std::uint8_t* fixed = raw(d_.fixed);
 
   // Work arrays in sorted order: reals from the state, ghosts as mirror images of their source
   // (gather_point, stages.hpp).

@@ -20,23 +20,19 @@ void Solver<Real>::sort_particles() {
   {
     // Key (cell, index in the scene): the order depends on the positions only, not on the order before,
     // so a run restarted from a checkpoint sorts exactly as the run that wrote it (copy_to_host).
-    const Grid g = grid_of(y0_.pos, static_cast<std::size_t>(n), cell);
+    const Grid g = grid_of(d_.pos, static_cast<std::size_t>(n), cell);
     real_keys_.resize(static_cast<std::size_t>(n));
     perm_.resize(static_cast<std::size_t>(n));
     std::uint64_t* key = raw(real_keys_);
-    const Vec3p* x = raw(y0_.pos);
+    const Vec3p* x = raw(d_.pos);
     const std::int32_t* orig = raw(original_);
     launch<kFlush>("real_keys", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       key[i] = (static_cast<std::uint64_t>(g.key(x[i])) << 32) | static_cast<std::uint32_t>(orig[i]);
     });
     thrust::sequence(perm_.begin(), perm_.end());
     thrust::sort_by_key(real_keys_.begin(), real_keys_.end(), perm_.begin());
-    DVec<Vec3p> t3p; DVec<Vec3<Real>> t3; DVec<Real> t1; DVec<Sym3<Real>> ts; DVec<std::int32_t> ti;
-    DVec<std::uint8_t> tb;
-    permute(y0_.pos, t3p); permute(y0_.vel, t3); permute(y0_.rho, t1); permute(y0_.energy, t1); permute(y0_.S, ts);
-    permute(pressure_, t1); permute(plastic_strain_, t1); permute(plastic_work_, t1); permute(damage_, t1); permute(temperature_, t1);
-    permute(bulking_, t1); permute(mass_, t1); permute(h_, t1); permute(material_, ti); permute(body_, ti); permute(fixed_, tb);
-    permute(original_, ti);
+    for_each_field(d_, [&](const FieldInfo&, auto& a) { permute(a); });
+    permute(original_);
   }
   // Ghosts: count the images of each real, scan, fill.
   const int planes = params_.plane_count;
@@ -45,7 +41,7 @@ void Solver<Real>::sort_particles() {
   const double margin = radius_;
   ghost_count_.resize(static_cast<std::size_t>(n) + 1);
   std::int32_t* count = raw(ghost_count_);
-  const Vec3p* x = raw(y0_.pos);
+  const Vec3p* x = raw(d_.pos);
   launch<kFlush>("ghost_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
     std::int32_t c = 0;
     Vec3p sign, shift;
@@ -156,7 +152,7 @@ void Solver<Real>::sort_particles() {
       list[b] = j;
     }
   });
-  thrust::copy(y0_.pos.begin(), y0_.pos.end(), pos_at_sort_.begin());
+  thrust::copy(d_.pos.begin(), d_.pos.end(), pos_at_sort_.begin());
   const std::size_t t = static_cast<std::size_t>(total);
   wx_.resize(t); wv_.resize(t); wrho_.resize(t); wp_.resize(t); wc_.resize(t); wm_.resize(t); wh_.resize(t);
   wvol_.resize(t); wA_.resize(t); wS_.resize(t); wmat_.resize(t); wbody_.resize(t); wdamage_.resize(t);
