@@ -1,6 +1,7 @@
 // The launch layer of the gpu port: one thread per item. Under nvcc a launch is a CUDA kernel of 256-thread
-// blocks, checked for errors at once; in the host build the same device lambda runs in an OpenMP parallel
-// loop (static schedule, so each item runs the same code in the same order whatever the thread count).
+// blocks, checked for errors at once; in the host build the same device lambda runs in the host's parallel
+// loop (parallel_for_with, common/parallel.hpp: the reference's loops too; static schedule, so each item
+// runs the same code in the same order whatever the thread count).
 // Lambdas are written [=] IMPACTSPH_LAMBDA (std::int64_t i) { ... } and capture raw pointers by value.
 // FlushDenormals (the float build): subnormal floats are read and written as zero, as the CUDA build
 // does with -ftz=true. The precursor of a wave decays through the subnormal range ahead of the front,
@@ -14,6 +15,7 @@
 #include <cuda_runtime.h>
 #define IMPACTSPH_LAMBDA __host__ __device__
 #else
+#include "common/parallel.hpp"
 #define IMPACTSPH_LAMBDA
 #if defined(__SSE__)
 #include <xmmintrin.h>
@@ -86,12 +88,7 @@ class DenormalFlush {
 template <bool FlushDenormals = false, class F>
 void launch(const char*, std::int64_t n, F f) {
   if (n <= 0) return;
-#pragma omp parallel
-  {
-    const DenormalFlush flush(FlushDenormals);
-#pragma omp for schedule(static)
-    for (std::int64_t i = 0; i < n; ++i) f(i);
-  }
+  parallel_for_with(n, [] { return DenormalFlush(FlushDenormals); }, f);
 }
 #endif
 

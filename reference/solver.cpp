@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/errors.hpp"
+#include "common/parallel.hpp"
 #include "common/verlet.hpp"
 
 namespace impactsph::reference {
@@ -16,13 +17,10 @@ ReferenceSolver::ReferenceSolver(const Scene& scene)
 }
 
 double ReferenceSolver::stable_time_step(const ParticleSet& p) {
-  const std::int64_t n = static_cast<std::int64_t>(p.size());
-  double dt = std::numeric_limits<double>::infinity();
-#pragma omp parallel for schedule(static) reduction(min : dt)
-  for (std::int64_t i = 0; i < n; ++i)
-    dt = std::min(dt, point_time_step(materials_[static_cast<std::size_t>(p.material[i])], params_.cfl, p.rho[i],
-                                      p.energy[i], p.h[i], p.vel[i]));
-  return dt;
+  return parallel_min(static_cast<std::int64_t>(p.size()), [&](std::int64_t i) {
+    return point_time_step(materials_[static_cast<std::size_t>(p.material[i])], params_.cfl, p.rho[i], p.energy[i],
+                           p.h[i], p.vel[i]);
+  });
 }
 
 // Mirror particles for the symmetry planes and walls. Planes are taken in turn and each mirrors the real
@@ -64,8 +62,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   grad_rho_.resize(total); grad_v_.resize(total); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
   pair_damage_.resize(total); let_go_.resize(total); image_walls_.resize(total); stress_.resize(total);
   av_factor_.resize(total);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < ni; ++i) {
+  parallel_for(ni, [&](std::int64_t i) {
     x_[i] = y.pos[i]; v_[i] = y.vel[i]; rho_[i] = y.rho[i]; m_[i] = mass_[i]; hh_[i] = h_[i];
     mat_[i] = material_[i]; bb_[i] = body_[i]; damage_all_[i] = damage_[i];
     const GatheredPoint<double> g =
@@ -74,7 +71,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     // the walls it lets go of: no pairs with images behind them, and no images of its own
     let_go_[i] = walls_let_go(params_.planes, params_.plane_count, stress_[i], pressure_[i], v_[i]);
     image_walls_[i] = 0;
-  }
+  });
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
     const Ghost& g = ghosts_[k];
     const std::size_t s = static_cast<std::size_t>(g.source), i = n + k;
@@ -91,12 +88,11 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   }
   // Artificial stress of each particle and ghost from its own stress, before any viscosity joins it.
   artificial_stress_.resize(params_.art.on() ? total : 0);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(total); ++i) {
+  parallel_for(static_cast<std::int64_t>(total), [&](std::int64_t i) {
     volume_[i] = m_[i] / rho_[i];
     s_over_rho2_[i] = stress_over_rho2(stress_[i], pressure_[i], rho_[i]);
     if (params_.art.on()) artificial_stress_[i] = artificial_stress(params_.art, s_over_rho2_[i]);
-  }
+  });
 
   const StagePoints<double> w = points();
   const RuntimeKernel kernel{params_.kernel};
@@ -104,19 +100,21 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   const std::int32_t* nb = neighbours_.indices.data();
 
   // Pass 1 (stages.hpp): each real's gradients from its neighbours, then the ghosts' mirrored from their sources.
-  std::size_t fallbacks = 0;
-  std::int64_t pairs = 0;  // neighbours within the kernel support, for the statistics
-#pragma omp parallel for schedule(static) reduction(+ : fallbacks, pairs)
-  for (std::int64_t i = 0; i < ni; ++i) {
+  row_neighbours_.resize(n);
+  fell_back_.resize(n);
+  parallel_for(ni, [&](std::int64_t i) {
     GradientSums<double> sums = GradientSums<double>::zero();
     const GradientRow<double> row = gradient_row(w, mats, i);
+    std::int32_t neighbours = 0;  // within the kernel support, for the statistics
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k)
-      if (add_gradient_neighbour(kernel, w, mats, row, nb[k], sums)) ++pairs;
+      if (add_gradient_neighbour(kernel, w, mats, row, nb[k], sums)) ++neighbours;
     const CorrectedGradients<double> cg = finish_gradient_row(params_, w, i, sums);
-    if (cg.fell_back) ++fallbacks;
+    row_neighbours_[i] = neighbours;
+    fell_back_[i] = cg.fell_back ? 1 : 0;
     grad_v_[i] = cg.grad_v;
-  }
-  stats_.correction_fallbacks = fallbacks;
+  });
+  stats_.correction_fallbacks = static_cast<std::size_t>(parallel_count(ni, [&](std::int64_t i) { return fell_back_[i]; }));
+  const std::int64_t pairs = parallel_count(ni, [&](std::int64_t i) { return row_neighbours_[i]; });
   stats_.mean_neighbours = ni ? static_cast<double>(pairs) / static_cast<double>(ni) : 0.0;
   for (std::size_t k = 0; k < ghosts_.size(); ++k)
     mirror_gradient_row(params_, w, static_cast<std::int64_t>(n + k), ghosts_[k].source, ghosts_[k].sign);
@@ -124,8 +122,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   // Pass 2 (stages.hpp): the SPH pairs and the penalty contact pairs of each real, then its rates.
   f.vel.resize(n); f.acc.resize(n); f.drho.resize(n); f.denergy.resize(n); f.dstress.resize(n);
   f.strain_rate.resize(n); f.contact_power.resize(n);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < ni; ++i) {
+  parallel_for(ni, [&](std::int64_t i) {
     const RateRow<double> row = rate_row(params_, w, mats, i);
     Vec3d acc{0, 0, 0}, contact{0, 0, 0};
     double de = 0, diffusion = 0, contact_power = 0;
@@ -138,7 +135,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
                                              contact_power, fixed_[i] != 0);
     f.vel[i] = r.vel; f.acc[i] = r.acc; f.drho[i] = r.drho; f.denergy[i] = r.de; f.dstress[i] = r.dS;
     f.strain_rate[i] = r.strain_rate; f.contact_power[i] = r.contact_power;
-  }
+  });
 }
 
 void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State& out, History* history) const {
@@ -150,8 +147,7 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
     history->d_temperature.resize(static_cast<std::size_t>(n));
     history->strain_rate.resize(static_cast<std::size_t>(n));
   }
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < n; ++i) {
+  parallel_for(n, [&](std::int64_t i) {
     out.pos[i] = y0.pos[i]; out.vel[i] = y0.vel[i]; out.rho[i] = y0.rho[i]; out.energy[i] = y0.energy[i];
     out.dev_stress[i] = y0.dev_stress[i];
     const PlasticResult<double> pr =
@@ -164,7 +160,7 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
       history->d_temperature[i] = pr.d_T;
       history->strain_rate[i] = f.strain_rate[i];
     }
-  }
+  });
 }
 
 void ReferenceSolver::check_state(const State& y, double dt) const {
@@ -199,10 +195,9 @@ void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double ski
   points.reserve(pos.size() + ghosts_.size());
   for (const Ghost& g : ghosts_) points.push_back(hadamard(g.sign, pos[static_cast<std::size_t>(g.source)]) + g.shift);
   build_neighbour_list(points, pos.size(), reach + skin, neighbours_);
-  const std::int64_t rows = static_cast<std::int64_t>(pos.size());
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < rows; ++i)
+  parallel_for(static_cast<std::int64_t>(pos.size()), [&](std::int64_t i) {
     std::sort(neighbours_.indices.begin() + neighbours_.offsets[i], neighbours_.indices.begin() + neighbours_.offsets[i + 1]);
+  });
   stats_.ghosts = ghosts_.size();
 }
 
@@ -210,13 +205,10 @@ void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double ski
 void ReferenceSolver::update_neighbours(const ParticleSet& p, double dt) {
   const std::size_t n = p.size();
   const std::int64_t ni = static_cast<std::int64_t>(n);
-  double vmax = 0, moved = 0;
   const bool same = list_valid_ && pos_at_build_.size() == n;
-#pragma omp parallel for schedule(static) reduction(max : vmax, moved)
-  for (std::int64_t i = 0; i < ni; ++i) {
-    vmax = std::max(vmax, norm(p.vel[i]));
-    if (same) moved = std::max(moved, norm(p.pos[i] - pos_at_build_[i]));
-  }
+  const double vmax = std::max(0.0, parallel_max(ni, [&](std::int64_t i) { return norm(p.vel[i]); }));
+  const double moved =
+      same ? std::max(0.0, parallel_max(ni, [&](std::int64_t i) { return norm(p.pos[i] - pos_at_build_[i]); })) : 0.0;
   const double reach = search_reach();
   const double growth = std::max(0.0, reach - reach_at_build_);
   if (same && verlet_list_holds(moved, dt, vmax, growth, skin_)) return;
@@ -265,12 +257,12 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
   std::swap(p.dev_stress, y1.dev_stress);
   // History variables of the final stage: plastic strain, adiabatic heating, damage, bulking (F 4.7-4.9,
   // X eq 28; integration.hpp), and the smoothing length.
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
+  parallel_for(static_cast<std::int64_t>(n), [&](std::int64_t i) {
     finish_point(materials_[static_cast<std::size_t>(p.material[i])], smoothing_[static_cast<std::size_t>(p.body[i])],
                  grad_v_[static_cast<std::size_t>(i)], dt, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i],
                  p.plastic_work[i], p.temperature[i], p.damage[i], p.pressure[i], p.bulking_pressure[i], p.h[i],
                  history.d_eps_p[i], history.d_plastic_work[i], history.d_temperature[i], history.strain_rate[i]);
+  });
 }
 
 }  // namespace impactsph::reference

@@ -108,6 +108,7 @@ class ReferenceSolver final : public Stepper {
   std::vector<std::int32_t> bb_;    // body of reals and ghosts
   std::vector<double> damage_all_;  // damage of reals and ghosts
   std::vector<double> pair_damage_; // damage each particle brings into the pair factor (reals and ghosts)
+  std::vector<std::int32_t> row_neighbours_, fell_back_;  // pass 1 per real: neighbours, 1 if it fell back
   std::vector<Sym3d> stress_;       // deviatoric stress of reals and ghosts
   // Stage states and rates, kept between steps so that a step allocates nothing.
   State y0_, y_half_, y1_;
