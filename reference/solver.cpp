@@ -62,7 +62,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   grad_rho_.resize(total); grad_v_.resize(total); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
   pair_damage_.resize(total); let_go_.resize(total); image_walls_.resize(total); stress_.resize(total);
   av_factor_.resize(total);
-  parallel_for(ni, [&](std::int64_t i) {
+  parallel_for(ni, [&](std::int64_t i) IMPACTSPH_FLATTEN {
     x_[i] = y.pos[i]; v_[i] = y.vel[i]; rho_[i] = y.rho[i]; m_[i] = mass_[i]; hh_[i] = h_[i];
     mat_[i] = material_[i]; bb_[i] = body_[i]; damage_all_[i] = damage_[i];
     const GatheredPoint<double> g =
@@ -102,7 +102,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   // Pass 1 (stages.hpp): each real's gradients from its neighbours, then the ghosts' mirrored from their sources.
   row_neighbours_.resize(n);
   fell_back_.resize(n);
-  parallel_for(ni, [&](std::int64_t i) {
+  parallel_for(ni, [&](std::int64_t i) IMPACTSPH_FLATTEN {
     GradientSums<double> sums = GradientSums<double>::zero();
     const GradientRow<double> row = gradient_row(w, mats, i);
     std::int32_t neighbours = 0;  // within the kernel support, for the statistics
@@ -122,7 +122,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   // Pass 2 (stages.hpp): the SPH pairs and the penalty contact pairs of each real, then its rates.
   f.vel.resize(n); f.acc.resize(n); f.drho.resize(n); f.denergy.resize(n); f.dstress.resize(n);
   f.strain_rate.resize(n); f.contact_power.resize(n);
-  parallel_for(ni, [&](std::int64_t i) {
+  parallel_for(ni, [&](std::int64_t i) IMPACTSPH_FLATTEN {
     const RateRow<double> row = rate_row(params_, w, mats, i);
     Vec3d acc{0, 0, 0}, contact{0, 0, 0};
     double de = 0, diffusion = 0, contact_power = 0;
@@ -147,7 +147,7 @@ void ReferenceSolver::advance(const State& y0, const Rates& f, double dt, State&
     history->d_temperature.resize(static_cast<std::size_t>(n));
     history->strain_rate.resize(static_cast<std::size_t>(n));
   }
-  parallel_for(n, [&](std::int64_t i) {
+  parallel_for(n, [&](std::int64_t i) IMPACTSPH_FLATTEN {
     out.pos[i] = y0.pos[i]; out.vel[i] = y0.vel[i]; out.rho[i] = y0.rho[i]; out.energy[i] = y0.energy[i];
     out.dev_stress[i] = y0.dev_stress[i];
     const PlasticResult<double> pr =
@@ -257,7 +257,7 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
   std::swap(p.dev_stress, y1.dev_stress);
   // History variables of the final stage: plastic strain, adiabatic heating, damage, bulking (F 4.7-4.9,
   // X eq 28; integration.hpp), and the smoothing length.
-  parallel_for(static_cast<std::int64_t>(n), [&](std::int64_t i) {
+  parallel_for(static_cast<std::int64_t>(n), [&](std::int64_t i) IMPACTSPH_FLATTEN {
     finish_point(materials_[static_cast<std::size_t>(p.material[i])], smoothing_[static_cast<std::size_t>(p.body[i])],
                  grad_v_[static_cast<std::size_t>(i)], dt, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i],
                  p.plastic_work[i], p.temperature[i], p.damage[i], p.pressure[i], p.bulking_pressure[i], p.h[i],
