@@ -112,7 +112,7 @@ for s, summary, t_fail, m_fail, t_sep, m_sep in table:
     ref_fail, ref_sep = finest[3], finest[5]
     share = m_sep and (m_sep[2] - m_sep[1]) / (m_sep[2] + m_sep[3])
     o = summary['observables']
-    settled = o.get('settled_time', -1)
+    settled = o.get('settled_time') or -1
     lines.append('| %s mm | %s | %s | %s | %s | %s | %s | %.1f g | %.1f m/s (%s) | %.3f %% | %.0f s |' % (
         s, cell(t_fail and t_fail * 1e6, '%.0f us', None),
         cell(m_fail and m_fail[0] * 1e3, '%.2f mm', ref_fail and ref_fail[0] * 1e3),
