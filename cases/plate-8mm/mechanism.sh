@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The mechanism check of issue 15: how the 8 mm plate fails at 190.7 m/s (F's scenario 8) at each spacing.
-# One `impactsph run` per spacing to 160 us with a frame every 4 us, then report-mechanism/report.md from
+# One `impactsph run` per spacing to 160 us (END) with a frame every 4 us, then report-mechanism/report.md from
 # the runs' frames, history_plate.csv and observables.csv: nothing typed in.
 #
 #   bash cases/plate-8mm/mechanism.sh                 # the runs that are missing, then the report
@@ -17,8 +17,10 @@
 #     work: the artificial viscosity's heat and the stored elastic energy, which the code does not separate.
 # The crack band's claim is that these do not depend on the spacing. Environment: BUILD_DIR (default
 # build), RUNS (default runs/mechanism-190.7), SPACINGS (mm, default "2 1.333 1"), THREADS (default 1),
-# OUT (default cases/plate-8mm/report-mechanism). A spacing whose summary.json exists is not run again. At
-# 1 mm a run takes about half an hour on one thread.
+# OUT (default cases/plate-8mm/report-mechanism), END (the end time, default "160 us"; a run whose plug has
+# not come off by then is continued with `impactsph run --restart DIR --end LATER`). A spacing whose
+# summary.json exists is not run again. At 1 mm a run takes about 20 minutes on one thread, at 0.7 mm
+# about 75 minutes to 160 us.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${BUILD_DIR:-build}
@@ -26,17 +28,18 @@ RUNS=${RUNS:-runs/mechanism-190.7}
 SPACINGS=${SPACINGS:-"2 1.333 1"}
 THREADS=${THREADS:-1}
 OUT=${OUT:-cases/plate-8mm/report-mechanism}
+END=${END:-160 us}
 mkdir -p "$RUNS" "$OUT"
 for s in $SPACINGS; do
   [[ -f "$RUNS/${s}mm/summary.json" ]] && continue
   echo "mechanism: 190.7 m/s at $s mm"
   "$BUILD_DIR/impactsph" run cases/plate-8mm/case.toml --spacing "${s}mm" --threads "$THREADS" -q \
-    --set "projectile.velocity=190.7 m/s" --set "time.end=160 us" --set "time.frame_interval=4 us" \
+    --set "projectile.velocity=190.7 m/s" --set "time.end=$END" --set "time.frame_interval=4 us" \
     --out "$RUNS/${s}mm" > "$RUNS/${s}mm.log" 2>&1
 done
 
 python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" $SPACINGS <<'PY'
-import csv, json, math, os, re, shlex, sys
+import csv, json, math, os, re, shlex, shutil, sys
 sys.path.insert(0, 'cases/hard')
 sys.path.insert(0, 'cases/plate-8mm')
 from isolated_particles import read_vtu
@@ -122,10 +125,33 @@ for s, summary, t_fail, m_fail, t_sep, m_sep in table:
         cell(share and 100 * share, '%.1f %%', None), 1e3 * o['plug_mass'], o['residual_velocity'],
         '%.0f us' % (1e6 * settled) if settled > 0 else 'not settled by %.0f us' % (1e6 * summary['simulated_time_s']),
         100 * summary['totals']['energy_drift_relative'], summary['wall_time_s']))
-lines += ['', 'Runs:', '']
+lines += ['', 'Each run\'s picture.png (drawn when the run finished; its time is in its title): a cut through the '
+          'symmetry plane coloured by plastic strain, failed particles marked.', '']
 for s, summary, *_ in table:
-    lines.append('- %s mm: `%s` (%d particles, %d steps, %.1f neighbours)' % (
-        s, shlex.join(summary['command_line']), summary['particles'], summary['steps'], summary['mean_neighbours']))
+    src = os.path.join(runs, s + 'mm', 'picture.png')
+    if os.path.isfile(src):
+        shutil.copyfile(src, os.path.join(out, 'end-%smm.png' % s))
+        lines.append('![%s mm](end-%smm.png)' % (s, s))
+lines += ['', 'Runs:', '']
+def command_of(run_dir, summary):
+    """The run's commands as a user types them, from its run.json (a restart's new end time included)."""
+    r = json.load(open(os.path.join(run_dir, 'run.json')))
+    cmd = ['build/impactsph', 'run', os.path.relpath(r['case_file']), '--spacing', r['spacing'], '--threads',
+           str(r['threads'])]
+    for x in r['set']:
+        cmd += ['--set', x]
+    text = '`%s`' % shlex.join(cmd + ['--out', run_dir])
+    if r.get('end'):
+        text += ', then `%s`' % shlex.join(['build/impactsph', 'run', '--restart', run_dir, '--end', r['end']])
+    if not summary.get('completed'):
+        text += ', stopped at %.0f us (SIGTERM: its checkpoint and summary written)' % (1e6 * summary['simulated_time_s'])
+    return text
+
+
+for s, summary, *_ in table:
+    lines.append('- %s mm: %s (%d particles, %d steps, %.1f neighbours)' % (
+        s, command_of(os.path.join(runs, s + 'mm'), summary), summary['particles'], summary['steps'],
+        summary['mean_neighbours']))
 open(os.path.join(out, 'report.md'), 'w').write('\n'.join(lines) + '\n')
 print('mechanism: wrote %s/report.md' % out)
 PY
