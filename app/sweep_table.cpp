@@ -33,16 +33,6 @@ std::string json_cell(const nlohmann::json& v) {
   return v.dump();
 }
 
-
-// Observables in SI: the unit of each, for the column heads.
-std::string observable_unit(const std::string& key) {
-  if (key.find("velocity") != std::string::npos) return "m/s";
-  if (key.find("mass") != std::string::npos) return "kg";
-  if (key.find("time") != std::string::npos) return "s";
-  if (key == "final_length" || key.rfind("impact_face_diameter", 0) == 0) return "m";
-  return "";
-}
-
 }  // namespace
 
 std::string write_table(const SweepSpec& spec, const fs::path& out, const std::vector<TableRow>& rows) {
@@ -56,8 +46,13 @@ std::string write_table(const SweepSpec& spec, const fs::path& out, const std::v
   for (const std::string& a : spec.axis_names) head.push_back(a);
   head.insert(head.end(), {"status", "particles", "steps", "wall_time_s", "particle_steps_per_s", "mean_neighbours",
                            "energy_drift", "correction_fallbacks"});
+  // Each observable's SI unit as the runs' summary.json give it ("observable_units"; none from a run
+  // written before it had them).
   for (const std::string& o : observables) {
-    const std::string unit = observable_unit(o);
+    std::string unit;
+    for (const TableRow& r : rows)
+      if (r.summary.is_object() && r.summary.contains("observable_units") && r.summary["observable_units"].contains(o))
+        unit = r.summary["observable_units"][o].get<std::string>();
     head.push_back(unit.empty() ? o : o + "_" + name_part(unit));
   }
   std::vector<std::vector<std::string>> cells;

@@ -263,22 +263,22 @@ std::vector<ObservableRow> observable_rows(const CaseObservables& o) {
   using K = ObservableRow::Kind;
   std::vector<ObservableRow> rows;
   if (o.taylor_bar) {
-    rows.push_back({"final_length", o.final_length, "mm", 1e3, 4, K::Number});
-    rows.push_back({"impact_face_diameter", o.impact_face_diameter, "mm", 1e3, 4, K::Number});
-    rows.push_back({"impact_face_diameter_shifted", o.impact_face_diameter_shifted, "mm", 1e3, 4, K::Number});
-    rows.push_back({"impact_face_diameter_area", o.impact_face_diameter_area, "mm", 1e3, 4, K::Number});
+    rows.push_back({"final_length", o.final_length, "mm", 1e3, 4, K::Number, "m"});
+    rows.push_back({"impact_face_diameter", o.impact_face_diameter, "mm", 1e3, 4, K::Number, "m"});
+    rows.push_back({"impact_face_diameter_shifted", o.impact_face_diameter_shifted, "mm", 1e3, 4, K::Number, "m"});
+    rows.push_back({"impact_face_diameter_area", o.impact_face_diameter_area, "mm", 1e3, 4, K::Number, "m"});
   }
   if (o.projectile) {
-    rows.push_back({"residual_velocity", o.residual_velocity, "m/s", 1, 2, K::Number});
-    rows.push_back({"residual_mass", o.residual_mass, "g", 1e3, 2, K::Number});
-    rows.push_back({"eroded_mass", o.eroded_mass, "g", 1e3, 2, K::Number});
-    rows.push_back({"settled_time", o.settled_time, "us", 1e6, 1, K::TimeOrNever});
+    rows.push_back({"residual_velocity", o.residual_velocity, "m/s", 1, 2, K::Number, "m/s"});
+    rows.push_back({"residual_mass", o.residual_mass, "g", 1e3, 2, K::Number, "kg"});
+    rows.push_back({"eroded_mass", o.eroded_mass, "g", 1e3, 2, K::Number, "kg"});
+    rows.push_back({"settled_time", o.settled_time, "us", 1e6, 1, K::TimeOrNever, "s"});
   }
   if (o.target) {
-    rows.push_back({"plug_velocity", o.plug_velocity, "m/s", 1, 2, K::Number});
-    rows.push_back({"plug_mass", o.plug_mass, "g", 1e3, 2, K::Number});
-    rows.push_back({"perforated", o.perforated ? 1.0 : 0.0, "", 1, 0, K::Flag});
-    rows.push_back({"damage_fraction", o.damage_fraction, "", 1, 4, K::Number});
+    rows.push_back({"plug_velocity", o.plug_velocity, "m/s", 1, 2, K::Number, "m/s"});
+    rows.push_back({"plug_mass", o.plug_mass, "g", 1e3, 2, K::Number, "kg"});
+    rows.push_back({"perforated", o.perforated ? 1.0 : 0.0, "", 1, 0, K::Flag, ""});
+    rows.push_back({"damage_fraction", o.damage_fraction, "", 1, 4, K::Number, ""});
   }
   return rows;
 }

@@ -42,6 +42,8 @@ struct ObservableRow {
   double scale = 1;         // SI to unit
   int digits = 2;           // after the decimal point, as printed
   Kind kind = Kind::Number;
+  const char* si_unit = ""; // the unit of value ("" for a number without one), as summary.json's
+                            // "observable_units" gives it to its readers
 };
 
 // The rows of the observables the case asked for, in the order they are printed.

@@ -151,13 +151,15 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
                            {"other_internal_energy_J", gained - plastic},
                            {"plastic_work_share", k0 > 0 ? plastic / k0 : 0.0},
                            {"other_internal_share", k0 > 0 ? (gained - plastic) / k0 : 0.0}};
-  nlohmann::json obs = nlohmann::json::object();
+  nlohmann::json obs = nlohmann::json::object(), units = nlohmann::json::object();
   for (const ObservableRow& row : observable_rows(r.observables)) {
     if (row.kind == ObservableRow::Kind::Flag) obs[row.name] = row.value != 0;
     else if (row.kind == ObservableRow::Kind::TimeOrNever && row.value < 0) obs[row.name] = nullptr;
     else obs[row.name] = row.value;
+    units[row.name] = row.si_unit;
   }
   j["observables"] = obs;
+  j["observable_units"] = units;
   j["settled"] = r.settled;
   write_text_atomic(opt.out_dir / "summary.json", j.dump(2) + "\n");
 }

@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "common/case_observables.hpp"
@@ -332,6 +333,22 @@ TEST_F(OutputTest, ObservableHistoryWritesRowsInPrintedUnitsAndRestarts) {
   ObservableHistory other(dir_, observable_rows(bar));
   const std::string message = error_of([&] { other.load_existing(1.0); });
   EXPECT_NE(message.find("observables.csv:1: unexpected header"), std::string::npos) << message;
+}
+
+// Each observable row says its SI unit (summary.json's "observable_units", read by the sweep table), and the
+// printed unit is that unit scaled as the row says.
+TEST(ObservableRows, CarryTheirSiUnitConsistentWithThePrintedOne) {
+  CaseObservables o;
+  o.taylor_bar = o.projectile = o.target = true;
+  const std::vector<std::tuple<std::string, std::string, double>> allowed = {
+      {"mm", "m", 1e3}, {"g", "kg", 1e3}, {"us", "s", 1e6}, {"m/s", "m/s", 1.0}, {"", "", 1.0}};
+  for (const ObservableRow& row : observable_rows(o)) {
+    bool found = false;
+    for (const auto& [printed, si, scale] : allowed)
+      if (printed == row.unit && si == row.si_unit && scale == row.scale) found = true;
+    EXPECT_TRUE(found) << row.name << ": printed in \"" << row.unit << "\" (x" << row.scale << "), SI unit \""
+                       << row.si_unit << "\"";
+  }
 }
 
 TEST_F(OutputTest, HistoryReportsMalformedFilesAndNameClashes) {
