@@ -166,6 +166,24 @@ IMPACTSPH_HD GatheredPoint<Real> gather_point(const MaterialParams<Real>& mat, R
   return g;
 }
 
+// A ghost as its source's mirror image x' = sign x + shift (mirror_image): the position, velocity and
+// deviatoric stress mirrored, and no mass when the source let go of a wall the image is mirrored through
+// (image_walls & source_let_go, lets_go_of_wall), so that the image takes no part in the pairs.
+template <class Real>
+struct MirroredPoint {
+  Vec3p x;
+  Vec3<Real> v;
+  Sym3<Real> S;
+  Real m;
+};
+template <class Real>
+IMPACTSPH_HD MirroredPoint<Real> mirror_point(const Vec3p& sign, const Vec3p& shift, unsigned image_walls,
+                                              unsigned source_let_go, const Vec3p& x, const Vec3<Real>& v,
+                                              const Sym3<Real>& S, Real m) {
+  const Vec3<Real> s = cast3<Real>(sign);
+  return {hadamard(sign, x) + shift, hadamard(s, v), mirror(S, s), (image_walls & source_let_go) ? Real(0) : m};
+}
+
 // (S - P I) / rho^2 (m^5 kg^-1 s^-2), the stress term of the momentum and energy pairs (F 2.11-2.12).
 template <class Real> IMPACTSPH_HD Sym3<Real> stress_over_rho2(const Sym3<Real>& S, Real P, Real rho) {
   const Real inv_rho2 = Real(1) / (rho * rho);

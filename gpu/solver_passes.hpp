@@ -77,12 +77,8 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
     unsigned image_walls = 0;
     if (pnt >= n) {
       image_walls = static_cast<unsigned>(gmask[pnt - n]) & prm.wall_planes;
-      if (image_walls & let_go) m = 0;  // its source let go of a wall it is mirrored through
-      const Vec3p sg = gsign[pnt - n];
-      xs = hadamard(sg, xs) + gshift[pnt - n];
-      const Vec3<Real> sr = cast3<Real>(sg);
-      vs = hadamard(sr, vs);
-      S = mirror(S, sr);
+      const MirroredPoint<Real> image = mirror_point(gsign[pnt - n], gshift[pnt - n], image_walls, let_go, xs, vs, S, m);
+      xs = image.x; vs = image.v; S = image.S; m = image.m;
     }
     const Real rho = y.rho[i];
     w.x[s] = xs; w.v[s] = vs; w.rho[s] = rho; w.p[s] = g.P; w.c[s] = g.c; w.m[s] = m; w.h[s] = h[i];

@@ -75,16 +75,15 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   for (std::size_t k = 0; k < ghosts_.size(); ++k) {
     const Ghost& g = ghosts_[k];
     const std::size_t s = static_cast<std::size_t>(g.source), i = n + k;
-    x_[i] = hadamard(g.sign, y.pos[s]) + g.shift;
-    v_[i] = hadamard(g.sign, y.vel[s]);
+    const MirroredPoint<double> image =
+        mirror_point(g.sign, g.shift, g.walls, let_go_[s], y.pos[s], y.vel[s], stress_[s], m_[s]);
+    x_[i] = image.x; v_[i] = image.v; stress_[i] = image.S; m_[i] = image.m;
     rho_[i] = rho_[s]; hh_[i] = hh_[s]; mat_[i] = mat_[s]; bb_[i] = bb_[s];
-    m_[i] = (g.walls & let_go_[s]) ? 0.0 : m_[s];  // its source let go of a wall it is mirrored through
     let_go_[i] = 0;
     image_walls_[i] = g.walls;
     damage_all_[i] = damage_all_[s];
     pair_damage_[i] = pair_damage_[s];
     pressure_[i] = pressure_[s]; sound_speed_[i] = sound_speed_[s];
-    stress_[i] = mirror(stress_[s], g.sign);
   }
   // Artificial stress of each particle and ghost from its own stress, before any viscosity joins it.
   artificial_stress_.resize(params_.art.on() ? total : 0);
