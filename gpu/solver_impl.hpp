@@ -114,16 +114,20 @@ class Solver final : public GpuStepper {
   }
 
   // The device state into p, in the scene's order: every field a step changes (FieldKind::Constant ones
-  // are as uploaded), scattered by `original`, widened to double.
+  // are as uploaded), scattered by `original` into scene_order_ (kept, so that a copy allocates nothing on
+  // the device), widened to double.
   void download(ParticleSet& p) {
-    for_each_field_pair(p, d_, [&](const FieldInfo& f, auto& host, const auto& dev) {
+    for_each_field_pair(d_, scene_order_, [&](const FieldInfo& f, const auto& dev, auto& ordered) {
       if (f.kind == FieldKind::Constant) return;
-      using D = typename std::decay_t<decltype(dev)>::value_type;
+      ordered.resize(dev.size());
+      thrust::scatter(dev.begin(), dev.end(), original_.begin(), ordered.begin());
+    });
+    for_each_field_pair(p, scene_order_, [](const FieldInfo& f, auto& host, const auto& ordered) {
+      if (f.kind == FieldKind::Constant) return;
+      using D = typename std::decay_t<decltype(ordered)>::value_type;
       using H = typename std::decay_t<decltype(host)>::value_type;
-      DVec<D> in_scene_order(dev.size());
-      thrust::scatter(dev.begin(), dev.end(), original_.begin(), in_scene_order.begin());
-      std::vector<D> staged(dev.size());
-      thrust::copy(in_scene_order.begin(), in_scene_order.end(), staged.begin());
+      std::vector<D> staged(ordered.size());
+      thrust::copy(ordered.begin(), ordered.end(), staged.begin());
       for (std::size_t i = 0; i < staged.size(); ++i) host[i] = to_host<H>(staged[i]);
     });
   }
@@ -371,6 +375,7 @@ class Solver final : public GpuStepper {
   DeviceParticles<Real> d_;         // the fields of ParticleSet, the state of the step start among them
   StateArrays<Real> y_half_, y1_;   // the midpoint and the step end
   DVec<std::int32_t> original_;
+  DeviceParticles<Real> scene_order_;  // download's scratch: the changing fields in the scene's order
   DVec<Vec3p> pos_at_sort_;
   // Rates of an evaluation and the history of the final stage.
   DVec<Vec3<Real>> rate_pos_, rate_acc_;
