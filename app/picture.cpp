@@ -135,8 +135,8 @@ Groups cut_particles(const Scene& scene, const ParticleSet& p, const Cut& c, int
     const std::size_t b = static_cast<std::size_t>(p.body[i]);
     const Vec3d& ls = scene.bodies[b].lattice_spacing;
     if (std::abs(p.pos[i][c.normal] - c.position - layer[b]) >= 0.5 * ls[c.normal]) continue;
-    const bool can_fail = scene.materials[static_cast<std::size_t>(p.material[i])].damage.kind != DamageKind::None;
-    const bool failed = can_fail && p.damage[i] >= kFailedDamage;
+    const bool fails = can_fail(scene.materials[static_cast<std::size_t>(p.material[i])]);
+    const bool failed = fails && p.damage[i] >= kFailedDamage;
     const int group = (failed ? kFailed : kIntact) + (outline && static_cast<int>(b) == projectile ? 1 : 0);
     const double value = field_value(field, p, i);
     if (!failed) {

@@ -169,7 +169,7 @@ CaseSpec read_case(const toml::table& tree, const Reporter& r) {
         std::find(kPictureFields.begin(), kPictureFields.end(), field) - kPictureFields.begin());
     if (spec.output.picture_field == PictureField::Damage &&
         std::none_of(spec.materials.begin(), spec.materials.end(),
-                     [](const MaterialSpec& m) { return m.params.damage.kind != DamageKind::None; }))
+                     [](const MaterialSpec& m) { return can_fail(m.params); }))
       o.fail("picture_field", "\"damage\" needs a material with a damage model ([materials.NAME] damage = { kind = "
                               "... }) and no material of this case has one; valid here: \"plastic_strain\", "
                               "\"speed\", \"pressure\"");

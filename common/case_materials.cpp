@@ -1,5 +1,6 @@
 // The [materials] of a case file: EOS, strength and damage tables, checked against docs/case-files.md and
-// read into MaterialSpec in SI units (common/case_reading.hpp).
+// read into MaterialSpec in SI units (common/case_reading.hpp). Each strength and damage model reads its own
+// constants (common/models/); what every model shares is read here.
 #include "common/case_reading.hpp"
 
 namespace impactsph::case_reading {
@@ -9,10 +10,8 @@ namespace {
 // Materials
 
 const Keys kEosKinds{"linear", "polynomial", "mie-gruneisen", "gruneisen-cubic"};
-const Keys kStrengthKinds{"hydrodynamic", "elastic", "perfectly-plastic", "johnson-cook", "johnson-holmquist-2"};
 // What the pairs of a failed particle carry (DamageParams::compressive_crack_faces).
 const Keys kCrackFaces{"scaled", "compression"};
-const Keys kDamageKinds{"none", "critical-plastic-strain", "fracture-energy", "johnson-cook", "johnson-holmquist-2"};
 
 void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
   const std::string kind = e.choice("kind", kEosKinds);
@@ -80,183 +79,84 @@ void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
   }
 }
 
-// A stress that must be between kMinModulus and kMaxModulus (a bare number is in Pa).
-double stress(const View& s, const std::string& k, const std::string& extra_hint = "") {
-  const double v = s.quantity(k, Dimension::Pressure);
-  s.range(k, v, kMinModulus, kMaxModulus, Dimension::Pressure, false, false, kModulusHint + extra_hint);
-  return v;
-}
-
-// The Johnson-Cook flow stress constants (F 3.12-3.13) of a strength table of kind "johnson-cook".
-void read_johnson_cook(const View& s, StrengthParams<double>& p) {
-  p.jc_a = stress(s, "a", "; A is the yield stress at zero plastic strain");
-  p.jc_b = s.quantity("b", Dimension::Pressure);
-  if (p.jc_b != 0)  // B = 0 (no hardening) is valid; a small non-zero B is a bare number meant in MPa
-    s.range("b", p.jc_b, kMinModulus, kMaxModulus, Dimension::Pressure, false, false,
-            std::string(kModulusHint) + "; b = 0 means no strain hardening");
-  p.jc_n = p.jc_b > 0 ? s.number("n") : s.number_or("n", 1.0);  // n is needed only with hardening
-  s.range("n", p.jc_n, 0, 2, Dimension::Dimensionless, true);
-  p.jc_c = s.number_or("c", 0.0);
-  s.range("c", p.jc_c, 0, 1, Dimension::Dimensionless);
-  p.jc_m = s.number_or("m", 1.0);
-  s.range("m", p.jc_m, 0, 5, Dimension::Dimensionless, true);
-  p.reference_strain_rate = s.quantity_or("reference_strain_rate", Dimension::StrainRate, 1.0);
-  s.positive("reference_strain_rate", p.reference_strain_rate, Dimension::StrainRate);
-  p.melt_temperature = 0;  // 0: no thermal softening; checked against room_temperature by read_material
-  if (s.has("melt_temperature")) {
-    p.melt_temperature = s.quantity("melt_temperature", Dimension::Temperature);
-    s.positive("melt_temperature", p.melt_temperature, Dimension::Temperature);
-  }
-  p.taylor_quinney = s.number_or("taylor_quinney", 0.9);
-  s.range("taylor_quinney", p.taylor_quinney, 0, 1, Dimension::Dimensionless, false, false,
-          "the fraction of plastic work that heats the material");
-}
-
-// The JH-2 strength constants (X eqs 22-24, Table 1) of a strength table of kind "johnson-holmquist-2".
-void read_jh2_strength(const View& s, StrengthParams<double>& p) {
-  const std::string norm = "a normalised JH-2 constant (dimensionless; X Table 1)";
-  p.jh_a = s.number("a");
-  s.range("a", p.jh_a, 0, 5, Dimension::Dimensionless, true, false, norm);
-  p.jh_b = s.number("b");
-  s.range("b", p.jh_b, 0, 5, Dimension::Dimensionless, false, false, norm);
-  p.jh_n = s.number("n");
-  s.range("n", p.jh_n, 0, 2, Dimension::Dimensionless, true, false, norm);
-  p.jh_m = s.number("m");
-  s.range("m", p.jh_m, 0, 2, Dimension::Dimensionless, true, false, norm);
-  p.jh_c = s.number_or("c", 0.0);
-  s.range("c", p.jh_c, 0, 1, Dimension::Dimensionless, false, false, norm);
-  p.hel = stress(s, "hel", "; the Hugoniot elastic limit, e.g. \"2.79 GPa\"");
-  p.p_hel = stress(s, "p_hel", "; the pressure at the HEL, e.g. \"1.46 GPa\"");
-  if (!(p.p_hel < p.hel))
-    s.fail("p_hel", "must be less than hel = " + format_quantity(p.hel, Dimension::Pressure) + " (got " +
-                        format_quantity(p.p_hel, Dimension::Pressure) + "): HEL = P_HEL + 2/3 sigma_HEL with sigma_HEL > 0");
-  p.tensile_pressure = stress(s, "tensile_strength", "; T, the largest hydrostatic tension, e.g. \"0.2 GPa\"");
-  p.sfmax = s.number_or("sfmax", 1e30);
-  s.range("sfmax", p.sfmax, 0, 1e30, Dimension::Dimensionless, true, false,
-          "the cap of the normalised fractured strength; leave it out for no cap");
-  p.reference_strain_rate = s.quantity_or("reference_strain_rate", Dimension::StrainRate, 1.0);
-  s.positive("reference_strain_rate", p.reference_strain_rate, Dimension::StrainRate);
-}
-
-// Returns the bulk modulus E/(3(1-2nu)) when the elastic constants were given as E and nu, else 0.
+// Returns the bulk modulus E/(3(1-2nu)) when the elastic constants were given as E and nu, else 0. The
+// elastic constants are read here for every model with a deviatoric stress; the model reads the rest.
 double read_strength(const View& s, StrengthParams<double>& p) {
-  const std::string kind = s.choice("kind", kStrengthKinds);
-  if (kind == "hydrodynamic") {
-    s.allow({"kind"});
-    p.kind = StrengthKind::Hydrodynamic;
-    return 0;
-  }
-  if (kind == "elastic") {
-    s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio"});
-    p.kind = StrengthKind::Elastic;
-  } else if (kind == "perfectly-plastic") {
-    s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio", "yield_stress"});
-    p.kind = StrengthKind::PerfectlyPlastic;
-    p.yield_stress = stress(s, "yield_stress", "; a material without strength is kind = \"hydrodynamic\"");
-  } else if (kind == "johnson-cook") {
-    s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio", "a", "b", "n", "c", "m",
-             "reference_strain_rate", "melt_temperature", "taylor_quinney"});
-    p.kind = StrengthKind::JohnsonCook;
-  } else {
-    s.allow({"kind", "shear_modulus", "youngs_modulus", "poisson_ratio", "a", "b", "c", "m", "n", "hel", "p_hel",
-             "tensile_strength", "sfmax", "reference_strain_rate"});
-    p.kind = StrengthKind::JohnsonHolmquist2;
-  }
-  const bool has_g = s.has("shear_modulus"), has_e = s.has("youngs_modulus"), has_nu = s.has("poisson_ratio");
-  if (has_g && (has_e || has_nu))
-    s.fail(has_e ? "youngs_modulus" : "poisson_ratio",
-           "give either shear_modulus or youngs_modulus + poisson_ratio, not both");
-  double derived_k = 0;
-  if (has_g) {
-    p.shear_modulus = stress(s, "shear_modulus");
-  } else {
-    if (!has_e && !has_nu)
-      s.missing("shear_modulus", "expected shear_modulus = \"80 GPa\", or youngs_modulus = \"200 GPa\" with "
-                                 "poisson_ratio = 0.3");
-    if (!has_e) s.missing("youngs_modulus", "poisson_ratio needs youngs_modulus, e.g. \"200 GPa\"");
-    if (!has_nu) s.missing("poisson_ratio", "youngs_modulus needs poisson_ratio, e.g. 0.3");
-    const double E = stress(s, "youngs_modulus");
-    const double nu = s.number("poisson_ratio");
-    s.range("poisson_ratio", nu, -1, 0.5, Dimension::Dimensionless, true, true);
-    p.shear_modulus = E / (2 * (1 + nu));
-    derived_k = E / (3 * (1 - 2 * nu));
-  }
-  if (p.kind == StrengthKind::JohnsonCook) read_johnson_cook(s, p);
-  if (p.kind == StrengthKind::JohnsonHolmquist2) read_jh2_strength(s, p);
-  return derived_k;
+  p.kind = strength_kind_of(s.choice("kind", strength_keys()));
+  return with_strength_model(p.kind, [&](auto model) {
+    using Model = decltype(model);
+    Keys allowed{"kind"};
+    if (Model::deviatoric) allowed.insert(allowed.end(), {"shear_modulus", "youngs_modulus", "poisson_ratio"});
+    const Keys own = Model::keys();
+    allowed.insert(allowed.end(), own.begin(), own.end());
+    s.allow(allowed);
+    if (!Model::deviatoric) return 0.0;
+    const bool has_g = s.has("shear_modulus"), has_e = s.has("youngs_modulus"), has_nu = s.has("poisson_ratio");
+    if (has_g && (has_e || has_nu))
+      s.fail(has_e ? "youngs_modulus" : "poisson_ratio",
+             "give either shear_modulus or youngs_modulus + poisson_ratio, not both");
+    double derived_k = 0;
+    if (has_g) {
+      p.shear_modulus = s.stress("shear_modulus");
+    } else {
+      if (!has_e && !has_nu)
+        s.missing("shear_modulus", "expected shear_modulus = \"80 GPa\", or youngs_modulus = \"200 GPa\" with "
+                                   "poisson_ratio = 0.3");
+      if (!has_e) s.missing("youngs_modulus", "poisson_ratio needs youngs_modulus, e.g. \"200 GPa\"");
+      if (!has_nu) s.missing("poisson_ratio", "youngs_modulus needs poisson_ratio, e.g. 0.3");
+      const double E = s.stress("youngs_modulus");
+      const double nu = s.number("poisson_ratio");
+      s.range("poisson_ratio", nu, -1, 0.5, Dimension::Dimensionless, true, true);
+      p.shear_modulus = E / (2 * (1 + nu));
+      derived_k = E / (3 * (1 - 2 * nu));
+    }
+    Model::read(s, p);
+    return derived_k;
+  });
 }
 
-// The damage table; `strength` is the strength table, named when damage needs plasticity it lacks.
+// The strength kinds whose plasticity the metal damage models count, quoted and joined with "or".
+std::string ductile_strength_keys() {
+  std::string out;
+  for (const std::string& key : strength_keys()) {
+    if (!with_strength_model(strength_kind_of(key), [](auto model) { return decltype(model)::ductile; })) continue;
+    out += (out.empty() ? "\"" : " or \"") + key + "\"";
+  }
+  return out;
+}
+
+// The damage table; `strength` is the strength table, named when the damage model needs a strength it lacks.
+// The pair options (pair_factor, crack_faces) are read here for every failing model; the model reads the rest.
 void read_damage(const View& d, const StrengthParams<double>& strength, DamageParams<double>& p) {
-  const std::string kind = d.choice("kind", kDamageKinds);
-  if (kind == "none") {
-    d.allow({"kind"});
-    p.kind = DamageKind::None;
-    return;
-  }
-  if (kind == "johnson-holmquist-2") {
-    if (strength.kind != StrengthKind::JohnsonHolmquist2)
-      d.fail("kind", "damage kind \"johnson-holmquist-2\" needs strength kind \"johnson-holmquist-2\" (its "
-                     "failure strain uses the strength's p_hel and tensile_strength, X eq 26)");
-    d.allow({"kind", "d1", "d2", "min_failure_strain", "bulking", "pair_factor"});
-    p.kind = DamageKind::JohnsonHolmquist2;
-    p.d1 = d.number("d1");
-    d.range("d1", p.d1, 0, 1, Dimension::Dimensionless, true, false, "D1 of eps_f = D1 (P* + T*)^D2 (X eq 26)");
-    p.d2 = d.number("d2");
-    d.range("d2", p.d2, 0, 5, Dimension::Dimensionless, false, false, "D2 of eps_f = D1 (P* + T*)^D2 (X eq 26)");
-    p.min_failure_strain = d.number_or("min_failure_strain", 0.0);
-    d.range("min_failure_strain", p.min_failure_strain, 0, 10, Dimension::Dimensionless);
-    p.bulking = d.number_or("bulking", 0.0);
-    d.range("bulking", p.bulking, 0, 1, Dimension::Dimensionless, false, false,
-            "beta, the fraction of lost elastic energy converted to pressure (X eq 28)");
-    p.scale_pairs = d.boolean_or("pair_factor", false);  // JH-2 carries damage in its strength (X eq 22)
-    return;
-  }
-  if (strength.kind != StrengthKind::JohnsonCook && strength.kind != StrengthKind::PerfectlyPlastic)
-    d.fail("kind", "damage kind \"" + kind + "\" accumulates plastic strain, but the strength kind \"" +
-                       (strength.kind == StrengthKind::Elastic ? "elastic" : strength.kind == StrengthKind::Hydrodynamic
-                                                                              ? "hydrodynamic"
-                                                                              : "johnson-holmquist-2") +
-                       "\" has no plasticity of that kind; use strength kind \"johnson-cook\" or \"perfectly-plastic\", "
-                       "or damage kind \"none\"");
-  p.scale_pairs = d.boolean_or("pair_factor", true);
-  p.compressive_crack_faces = d.choice("crack_faces", kCrackFaces, "scaled") == "compression";
-  if (p.compressive_crack_faces && !p.scale_pairs)
-    d.fail("crack_faces", "crack_faces = \"compression\" acts on the pairs of failed particles, which "
-                          "pair_factor = false leaves unscaled and unfailed; set pair_factor = true or drop crack_faces");
-  if (kind == "critical-plastic-strain") {
-    d.allow({"kind", "critical_plastic_strain", "pair_factor", "crack_faces"});
-    p.kind = DamageKind::CriticalPlasticStrain;
-    p.critical_plastic_strain = d.number("critical_plastic_strain");
-    d.range("critical_plastic_strain", p.critical_plastic_strain, 0, 10, Dimension::Dimensionless, true);
-    return;
-  }
-  if (kind == "fracture-energy") {
-    d.allow({"kind", "fracture_energy", "band_width_factor", "pair_factor", "crack_faces"});
-    p.kind = DamageKind::FractureEnergy;
-    p.fracture_energy = d.quantity("fracture_energy", Dimension::FractureEnergy);
-    d.range("fracture_energy", p.fracture_energy, 0, 1e8, Dimension::FractureEnergy, true, false,
-            "Gamma, the plastic work per unit crack area at failure (damage.hpp)");
-    p.band_width_factor = d.number("band_width_factor");
-    d.range("band_width_factor", p.band_width_factor, 0.5, 20, Dimension::Dimensionless, false, false,
-            "the width of the failing band in initial smoothing lengths h0 = h_factor x spacing");
-    return;
-  }
-  d.allow({"kind", "d1", "d2", "d3", "d4", "d5", "min_failure_strain", "pair_factor", "crack_faces"});
-  p.kind = DamageKind::JohnsonCook;
-  const std::string why = "the Johnson-Cook failure constants are at most 20 in magnitude";
-  p.d1 = d.number("d1");
-  d.range("d1", p.d1, -1, 20, Dimension::Dimensionless, false, false, why);
-  p.d2 = d.number("d2");
-  d.range("d2", p.d2, 0, 20, Dimension::Dimensionless, false, false, why);
-  p.d3 = d.number("d3");
-  d.range("d3", p.d3, -20, 20, Dimension::Dimensionless, false, false, why);
-  p.d4 = d.number_or("d4", 0.0);
-  d.range("d4", p.d4, -20, 20, Dimension::Dimensionless, false, false, why);
-  p.d5 = d.number_or("d5", 0.0);
-  d.range("d5", p.d5, -20, 20, Dimension::Dimensionless, false, false, why);
-  p.min_failure_strain = d.number_or("min_failure_strain", 0.0);
-  d.range("min_failure_strain", p.min_failure_strain, 0, 10, Dimension::Dimensionless);
+  const std::string kind = d.choice("kind", damage_keys());
+  p.kind = damage_kind_of(kind);
+  with_damage_model(p.kind, [&](auto model) {
+    using Model = decltype(model);
+    const std::string strength_kind = strength_key(strength.kind);
+    if (Model::required_strength && strength_kind != Model::required_strength)
+      d.fail("kind", "damage kind \"" + kind + "\" needs strength kind \"" + Model::required_strength + "\" (" +
+                         Model::required_strength_because + ")");
+    const bool ductile = with_strength_model(strength.kind, [](auto s) { return decltype(s)::ductile; });
+    if (Model::needs_ductile_strength && !ductile)
+      d.fail("kind", "damage kind \"" + kind + "\" accumulates plastic strain, but the strength kind \"" + strength_kind +
+                         "\" has no plasticity of that kind; use strength kind " + ductile_strength_keys() +
+                         ", or damage kind \"none\"");
+    Keys allowed{"kind"};
+    const Keys own = Model::keys();
+    allowed.insert(allowed.end(), own.begin(), own.end());
+    if (Model::fails) allowed.push_back("pair_factor");
+    if (Model::takes_crack_faces) allowed.push_back("crack_faces");
+    d.allow(allowed);
+    if (!Model::fails) return;
+    p.scale_pairs = d.boolean_or("pair_factor", Model::default_pair_factor);
+    if (Model::takes_crack_faces) {
+      p.compressive_crack_faces = d.choice("crack_faces", kCrackFaces, "scaled") == "compression";
+      if (p.compressive_crack_faces && !p.scale_pairs)
+        d.fail("crack_faces", "crack_faces = \"compression\" acts on the pairs of failed particles, which "
+                              "pair_factor = false leaves unscaled and unfailed; set pair_factor = true or drop crack_faces");
+    }
+    Model::read(d, p);
+  });
 }
 
 MaterialSpec read_material(const View& m, const std::string& name) {

@@ -188,6 +188,13 @@ class Values {
   const Reporter& r_;
 };
 
+constexpr double GPa = 1e9;
+constexpr double kMaxModulus = 2000 * GPa;  // above every solid's modulus (diamond: ~1100 GPa)
+// Below the shear modulus of soft rubber (~0.3 MPa) and any yield stress of a metal: catches a bare number
+// meant in GPa or MPa but read in Pa.
+constexpr double kMinModulus = 0.1e6;
+inline const char* const kModulusHint = "a bare number is in Pa, write units as in \"200 GPa\"";
+
 // A table being read: its full key (`materials.steel.eos`), what it is for messages ("the EOS of a
 // material") and typed accessors whose errors name the full key of the entry.
 class View {
@@ -293,6 +300,20 @@ class View {
                 (why.empty() ? "" : "; " + why));
   }
 
+  // A stress or modulus, required, between kMinModulus and kMaxModulus (a bare number is in Pa);
+  // `extra_hint` follows the unit hint in the message.
+  double stress(const std::string& k, const std::string& extra_hint = "") const {
+    const double v = quantity(k, Dimension::Pressure);
+    range(k, v, kMinModulus, kMaxModulus, Dimension::Pressure, false, false, kModulusHint + extra_hint);
+    return v;
+  }
+  // The same, but 0 is valid too (a small non-zero value is a bare number meant in MPa or GPa).
+  double stress_or_zero(const std::string& k, const std::string& extra_hint = "") const {
+    const double v = quantity(k, Dimension::Pressure);
+    if (v != 0) range(k, v, kMinModulus, kMaxModulus, Dimension::Pressure, false, false, kModulusHint + extra_hint);
+    return v;
+  }
+
   const Values& values() const { return v_; }
 
  private:
@@ -302,12 +323,6 @@ class View {
   std::string path_, what_;
 };
 
-constexpr double GPa = 1e9;
-constexpr double kMaxModulus = 2000 * GPa;  // above every solid's modulus (diamond: ~1100 GPa)
-// Below the shear modulus of soft rubber (~0.3 MPa) and any yield stress of a metal: catches a bare number
-// meant in GPa or MPa but read in Pa.
-constexpr double kMinModulus = 0.1e6;
-inline const char* const kModulusHint = "a bare number is in Pa, write units as in \"200 GPa\"";
 
 // Names are used by overrides as NAME.key, so they must not hold the override syntax.
 inline void check_name(const Reporter& r, const toml::node* at, const std::string& key, const std::string& name) {

@@ -94,7 +94,7 @@ IMPACTSPH_HD PlasticResult<Real> trial_plastic_return(const MaterialParams<Real>
 // End of a step for one particle (F 4.7-4.9, X eq 28): accumulate the plastic strain, the plastic work
 // per unit mass (J/kg) and the heating of the final stage, recompute the pressure (Pa) from the EOS and the bulking increment dP_bulk, bound it as
 // the material carries it at its damage (apply_failure), add the damage increment (D capped at 1), grow
-// the JH-2 bulking increment with the strength the damage took (the strength lost becomes pressure),
+// what the damage model adds to the pressure (the JH-2 bulking: the strength lost becomes pressure),
 // and strip a failed particle of what it no longer carries. strain_rate in 1/s.
 template <class Real>
 IMPACTSPH_HD void finish_step(const MaterialParams<Real>& mat, Real rho, Real energy, Sym3<Real>& S, Real& plastic_strain,
@@ -111,7 +111,7 @@ IMPACTSPH_HD void finish_step(const MaterialParams<Real>& mat, Real rho, Real en
     const Real dd = damage_increment(mat, d_eps_p, plastic_strain, plastic_work, pressure, von_mises(S), strain_rate, temperature);
     const Real d = damage + dd;
     damage = d < Real(1) ? d : Real(1);
-    const Real bulking = jh2_bulking_increment(mat, rho, pressure, d_old, damage, strain_rate, dP_bulk);
+    const Real bulking = damage_added_pressure(mat, rho, pressure, d_old, damage, strain_rate, dP_bulk);
     if (bulking != dP_bulk) {
       dP_bulk = bulking;
       pressure = material_pressure(mat, rho, energy, dP_bulk, c);

@@ -179,13 +179,11 @@ Scene build_scene(const CaseSpec& spec) {
 
   Scene scene;
   scene.spec = spec;
-  // A fracture-energy criterion fails at Gamma / (k h0): its critical work is set here from the case's
-  // initial smoothing length h0 = h_factor x spacing (damage.hpp, fracture_energy_critical_work).
+  // Damage constants that follow from the case's initial smoothing length h0 = h_factor x spacing (a
+  // fracture-energy criterion fails at Gamma / (k h0), common/models/damage_fracture_energy.hpp).
   for (const MaterialSpec& m : spec.materials) {
     MaterialParams<double> params = m.params;
-    if (params.damage.kind == DamageKind::FractureEnergy)
-      params.damage.critical_plastic_work =
-          fracture_energy_critical_work(params.damage, spec.numerics.h_factor * spec.numerics.spacing);
+    set_damage_smoothing_length(params.damage, spec.numerics.h_factor * spec.numerics.spacing);
     scene.materials.push_back(params);
   }
 

@@ -1,6 +1,6 @@
 // Deviatoric stress: hypo-elastic Hooke law with the Jaumann rate (F eqs 3.5-3.7) and the von Mises
-// radial return (F eqs 3.8-3.11, with the yield function corrected as in physics-notes), and the pieces of
-// the Johnson-Cook flow stress (F eqs 3.12-3.13, X eq 29) that need no material struct.
+// radial return (F eqs 3.8-3.11, with the yield function corrected as in physics-notes), and the normalised
+// strain rate and temperature that several models share. The flow stresses are in common/models/.
 // Units: stress in Pa, rates in 1/s, G in Pa, temperatures in K.
 #pragma once
 #include "common/tensor.hpp"
@@ -63,52 +63,6 @@ template <class Real> IMPACTSPH_HD Real homologous_temperature(Real T, Real room
   if (!(melt_temperature > room_temperature)) return Real(0);
   const Real t = (T - room_temperature) / (melt_temperature - room_temperature);
   return min_of(max_of(t, Real(0)), Real(1));
-}
-
-// Johnson-Cook flow stress (F eqs 3.12-3.13, X eq 29), Pa:
-//   sigma_y = (A + B eps_p^n)(1 + C ln eps_dot*)(1 - T*^m),
-// with A, B in Pa, eps_p the equivalent plastic strain (negative values read as 0), eps_dot* and T* from
-// johnson_cook_rate_ratio and homologous_temperature. eps_p^n at eps_p = 0 is its limit from above: 0 for
-// n > 0, 1 for n = 0 (constant B: no jump at the first plastic step); pow and log are never called at 0.
-// T*^m is 0 at T* = 0. Never negative: a negative rate factor (C < 0 at extreme rates) gives 0.
-template <class Real>
-IMPACTSPH_HD Real johnson_cook_flow_stress(Real a, Real b, Real n, Real c, Real m, Real eps_p, Real eps_rate_star,
-                                           Real t_star) {
-  const Real eps_n = eps_p > Real(0) ? std::pow(eps_p, n) : (n > Real(0) ? Real(0) : Real(1));
-  const Real hardening = a + b * eps_n;
-  const Real rate = eps_rate_star > Real(1) ? Real(1) + c * std::log(eps_rate_star) : Real(1);
-  const Real thermal = t_star > Real(0) ? Real(1) - std::pow(t_star, m) : Real(1);
-  return max_of(hardening * rate * thermal, Real(0));
-}
-
-// Johnson-Holmquist 2 (JH-2) normalised strengths (X eqs 23-24; Johnson and Holmquist 1994). All are
-// normalised by the equivalent stress at the Hugoniot elastic limit, sigma_HEL, and take the normalised
-// pressure P* = P/P_HEL, the normalised maximum tensile pressure T* = T/P_HEL and the normalised strain
-// rate eps_dot* (johnson_cook_rate_ratio: at least 1, so ln eps_dot* >= 0). Dimensionless.
-//   intact    sigma_i* = A (P* + T*)^N (1 + C ln eps_dot*), 0 where P* + T* <= 0 (no strength at or
-//             beyond the tensile limit);
-//   fractured sigma_f* = B (P*)^M (1 + C ln eps_dot*), at most SFMAX, 0 where P* <= 0 (a comminuted
-//             ceramic has no strength without confinement);
-//   damaged   sigma* = sigma_i* - D (sigma_i* - sigma_f*) (X eq 22), D in [0, 1].
-// pow is never called at 0 or below. A rate factor below 0 (C < 0) gives 0.
-template <class Real>
-IMPACTSPH_HD Real jh2_rate_factor(Real c, Real eps_rate_star) {
-  return eps_rate_star > Real(1) ? max_of(Real(1) + c * std::log(eps_rate_star), Real(0)) : Real(1);
-}
-template <class Real>
-IMPACTSPH_HD Real jh2_intact_strength(Real a, Real n, Real c, Real p_star, Real t_star, Real eps_rate_star) {
-  const Real s = p_star + t_star;
-  if (!(s > Real(0))) return Real(0);
-  return a * std::pow(s, n) * jh2_rate_factor(c, eps_rate_star);
-}
-template <class Real>
-IMPACTSPH_HD Real jh2_fractured_strength(Real b, Real m, Real c, Real p_star, Real eps_rate_star, Real sfmax) {
-  if (!(p_star > Real(0))) return Real(0);
-  return min_of(b * std::pow(p_star, m) * jh2_rate_factor(c, eps_rate_star), sfmax);
-}
-template <class Real> IMPACTSPH_HD Real jh2_damaged_strength(Real intact, Real fractured, Real D) {
-  const Real d = min_of(max_of(D, Real(0)), Real(1));
-  return intact - d * (intact - fractured);
 }
 
 }  // namespace impactsph

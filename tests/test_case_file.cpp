@@ -48,7 +48,7 @@ TEST(CaseFile, ReadsTheBaseCase) {
   EXPECT_DOUBLE_EQ(cu.eos.gamma0, 2.02);
   EXPECT_EQ(cu.strength.kind, impactsph::StrengthKind::PerfectlyPlastic);
   EXPECT_NEAR(cu.strength.shear_modulus, 124e9 / (2 * 1.34), 1);
-  EXPECT_DOUBLE_EQ(cu.strength.yield_stress, 90e6);
+  EXPECT_DOUBLE_EQ(cu.strength.perfectly_plastic.yield_stress, 90e6);
   EXPECT_DOUBLE_EQ(cu.specific_heat, 383);
 
   ASSERT_EQ(s.bodies.size(), 2u);
@@ -434,12 +434,12 @@ TEST(CaseFileLoad, DocumentedExampleLoads) {
   EXPECT_NEAR(s.bodies[1].velocity.z, -298, 1e-12);
   const auto& weldox = s.materials[0].params;
   EXPECT_EQ(weldox.strength.kind, impactsph::StrengthKind::JohnsonCook);
-  EXPECT_DOUBLE_EQ(weldox.strength.jc_a, 490e6);
-  EXPECT_DOUBLE_EQ(weldox.strength.jc_b, 807e6);
+  EXPECT_DOUBLE_EQ(weldox.strength.johnson_cook.a, 490e6);
+  EXPECT_DOUBLE_EQ(weldox.strength.johnson_cook.b, 807e6);
   EXPECT_DOUBLE_EQ(weldox.strength.reference_strain_rate, 5e-4);
   EXPECT_DOUBLE_EQ(weldox.strength.melt_temperature, 0);  // F neglects thermal effects
   EXPECT_EQ(weldox.damage.kind, impactsph::DamageKind::CriticalPlasticStrain);
-  EXPECT_DOUBLE_EQ(weldox.damage.critical_plastic_strain, 0.3);
+  EXPECT_DOUBLE_EQ(weldox.damage.critical_plastic_strain.strain, 0.3);
   ASSERT_EQ(s.contacts.size(), 1u);
   EXPECT_EQ(s.contacts[0].kind, impactsph::ContactSpec::Kind::Penalty);
   EXPECT_EQ(s.contacts[0].index_a, 1);

@@ -89,19 +89,19 @@ TEST(CaseFileCeramic, ReadsJh2AndTungsten) {
   const auto& a = s.materials[0].params;
   EXPECT_EQ(a.strength.kind, impactsph::StrengthKind::JohnsonHolmquist2);
   EXPECT_DOUBLE_EQ(a.strength.shear_modulus, 90.16e9);
-  EXPECT_DOUBLE_EQ(a.strength.jh_a, 0.93);
-  EXPECT_DOUBLE_EQ(a.strength.jh_b, 0.31);
-  EXPECT_DOUBLE_EQ(a.strength.jh_m, 0.6);
-  EXPECT_DOUBLE_EQ(a.strength.jh_n, 0.6);
-  EXPECT_DOUBLE_EQ(a.strength.hel, 2.79e9);
-  EXPECT_DOUBLE_EQ(a.strength.p_hel, 1.46e9);
-  EXPECT_DOUBLE_EQ(a.strength.tensile_pressure, 0.2e9);
-  EXPECT_DOUBLE_EQ(a.strength.sfmax, 1e30);  // default: no cap
+  EXPECT_DOUBLE_EQ(a.strength.jh2.a, 0.93);
+  EXPECT_DOUBLE_EQ(a.strength.jh2.b, 0.31);
+  EXPECT_DOUBLE_EQ(a.strength.jh2.m, 0.6);
+  EXPECT_DOUBLE_EQ(a.strength.jh2.n, 0.6);
+  EXPECT_DOUBLE_EQ(a.strength.jh2.hel, 2.79e9);
+  EXPECT_DOUBLE_EQ(a.strength.jh2.p_hel, 1.46e9);
+  EXPECT_DOUBLE_EQ(a.strength.jh2.tensile_pressure, 0.2e9);
+  EXPECT_DOUBLE_EQ(a.strength.jh2.sfmax, 1e30);  // default: no cap
   EXPECT_DOUBLE_EQ(a.strength.reference_strain_rate, 1.0);
   EXPECT_EQ(a.damage.kind, impactsph::DamageKind::JohnsonHolmquist2);
-  EXPECT_DOUBLE_EQ(a.damage.d1, 0.005);
-  EXPECT_DOUBLE_EQ(a.damage.d2, 1.0);
-  EXPECT_DOUBLE_EQ(a.damage.bulking, 1.0);
+  EXPECT_DOUBLE_EQ(a.damage.jh2.d1, 0.005);
+  EXPECT_DOUBLE_EQ(a.damage.jh2.d2, 1.0);
+  EXPECT_DOUBLE_EQ(a.damage.jh2.bulking, 1.0);
   EXPECT_FALSE(a.damage.scale_pairs);  // JH-2 default
   const auto& w = s.materials[1].params;
   EXPECT_EQ(w.eos.kind, impactsph::EosKind::GruneisenCubic);
@@ -211,9 +211,9 @@ TEST_F(MaterialFiles, ReadsTheFileAndOverridesApply) {
                              "strength = { " + kJh2 + " }\ndamage = { " + kJh2Damage + " }\n");
   write("case.toml", with_alumina_file("file = \"materials/al.toml\""));
   CaseSpec s = impactsph::load_case_file(case_path(), {}, "");
-  EXPECT_DOUBLE_EQ(s.materials[0].params.strength.hel, 2.79e9);
+  EXPECT_DOUBLE_EQ(s.materials[0].params.strength.jh2.hel, 2.79e9);
   s = impactsph::load_case_file(case_path(), {"alumina.strength.hel=3 GPa"}, "");
-  EXPECT_DOUBLE_EQ(s.materials[0].params.strength.hel, 3e9);
+  EXPECT_DOUBLE_EQ(s.materials[0].params.strength.jh2.hel, 3e9);
 }
 
 TEST_F(MaterialFiles, ErrorsNameTheMaterialFile) {

@@ -344,5 +344,5 @@ TEST(CaseFileErrors, BadNoses) {
 }
 
 // Both plate cases take Weldox 460 E from cases/materials/weldox-460e.toml, whose crack-band criterion the
-// scene turns into a critical plastic work Gamma / (k h0) at its spacing (damage.hpp): twice as large at
+// scene turns into a critical plastic work Gamma / (k h0) at its spacing (damage_fracture_energy.hpp): twice as large at
 // 1 mm as at 2 mm.

@@ -44,11 +44,11 @@ TEST(CaseFileMaterials, JohnsonCookStrength) {
   const auto& st = s.materials[1].params.strength;
   EXPECT_EQ(st.kind, impactsph::StrengthKind::JohnsonCook);
   EXPECT_NEAR(st.shear_modulus, 124e9 / (2 * 1.34), 1);
-  EXPECT_DOUBLE_EQ(st.jc_a, 90e6);
-  EXPECT_DOUBLE_EQ(st.jc_b, 292e6);
-  EXPECT_DOUBLE_EQ(st.jc_n, 0.31);
-  EXPECT_DOUBLE_EQ(st.jc_c, 0.025);
-  EXPECT_DOUBLE_EQ(st.jc_m, 1.09);
+  EXPECT_DOUBLE_EQ(st.johnson_cook.a, 90e6);
+  EXPECT_DOUBLE_EQ(st.johnson_cook.b, 292e6);
+  EXPECT_DOUBLE_EQ(st.johnson_cook.n, 0.31);
+  EXPECT_DOUBLE_EQ(st.johnson_cook.c, 0.025);
+  EXPECT_DOUBLE_EQ(st.johnson_cook.m, 1.09);
   EXPECT_DOUBLE_EQ(st.reference_strain_rate, 1e-3);
   EXPECT_DOUBLE_EQ(st.melt_temperature, 1356);
   EXPECT_DOUBLE_EQ(st.taylor_quinney, 0.85);
@@ -58,10 +58,10 @@ TEST(CaseFileMaterials, JohnsonCookStrength) {
   s = parse_case_string(copper("kind = \"johnson-cook\", shear_modulus = \"46 GPa\", a = \"90 MPa\", b = 0"), "case.toml");
   const auto& d = s.materials[1].params.strength;
   EXPECT_DOUBLE_EQ(d.shear_modulus, 46e9);
-  EXPECT_DOUBLE_EQ(d.jc_b, 0);
-  EXPECT_DOUBLE_EQ(d.jc_n, 1);  // not needed without hardening
-  EXPECT_DOUBLE_EQ(d.jc_c, 0);
-  EXPECT_DOUBLE_EQ(d.jc_m, 1);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.b, 0);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.n, 1);  // not needed without hardening
+  EXPECT_DOUBLE_EQ(d.johnson_cook.c, 0);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.m, 1);
   EXPECT_DOUBLE_EQ(d.reference_strain_rate, 1);
   EXPECT_DOUBLE_EQ(d.melt_temperature, 0);  // no thermal softening
   EXPECT_DOUBLE_EQ(d.taylor_quinney, 0.9);
@@ -128,7 +128,7 @@ TEST(CaseFileMaterials, DamageModels) {
   CaseSpec s = parse_case_string(
       copper(kJc, "damage = { kind = \"critical-plastic-strain\", critical_plastic_strain = 0.3 }"), "case.toml");
   EXPECT_EQ(s.materials[1].params.damage.kind, impactsph::DamageKind::CriticalPlasticStrain);
-  EXPECT_DOUBLE_EQ(s.materials[1].params.damage.critical_plastic_strain, 0.3);
+  EXPECT_DOUBLE_EQ(s.materials[1].params.damage.critical_plastic_strain.strain, 0.3);
   EXPECT_EQ(s.materials[0].params.damage.kind, impactsph::DamageKind::None);
 
   // Johnson-Cook failure on a perfectly plastic material; d4, d5 and min_failure_strain default to 0.
@@ -136,23 +136,23 @@ TEST(CaseFileMaterials, DamageModels) {
   s = parse_case_string(t, "case.toml");
   const auto& d = s.materials[1].params.damage;
   EXPECT_EQ(d.kind, impactsph::DamageKind::JohnsonCook);
-  EXPECT_DOUBLE_EQ(d.d1, -0.09);
-  EXPECT_DOUBLE_EQ(d.d2, 0.25);
-  EXPECT_DOUBLE_EQ(d.d3, -0.5);
-  EXPECT_DOUBLE_EQ(d.d4, 0);
-  EXPECT_DOUBLE_EQ(d.d5, 0);
-  EXPECT_DOUBLE_EQ(d.min_failure_strain, 0);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.d1, -0.09);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.d2, 0.25);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.d3, -0.5);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.d4, 0);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.d5, 0);
+  EXPECT_DOUBLE_EQ(d.johnson_cook.min_failure_strain, 0);
 
   t = copper(kJc, "damage = { kind = \"johnson-cook\", d1 = 0.54, d2 = 4.89, d3 = -3.03, d4 = 0.014, d5 = 1.12, "
                   "min_failure_strain = 0.05 }");
   s = parse_case_string(t, "case.toml");
   const auto& e = s.materials[1].params.damage;
-  EXPECT_DOUBLE_EQ(e.d1, 0.54);
-  EXPECT_DOUBLE_EQ(e.d2, 4.89);
-  EXPECT_DOUBLE_EQ(e.d3, -3.03);
-  EXPECT_DOUBLE_EQ(e.d4, 0.014);
-  EXPECT_DOUBLE_EQ(e.d5, 1.12);
-  EXPECT_DOUBLE_EQ(e.min_failure_strain, 0.05);
+  EXPECT_DOUBLE_EQ(e.johnson_cook.d1, 0.54);
+  EXPECT_DOUBLE_EQ(e.johnson_cook.d2, 4.89);
+  EXPECT_DOUBLE_EQ(e.johnson_cook.d3, -3.03);
+  EXPECT_DOUBLE_EQ(e.johnson_cook.d4, 0.014);
+  EXPECT_DOUBLE_EQ(e.johnson_cook.d5, 1.12);
+  EXPECT_DOUBLE_EQ(e.johnson_cook.min_failure_strain, 0.05);
 }
 
 TEST(CaseFileMaterials, DamageErrors) {
@@ -204,7 +204,7 @@ TEST(CaseFileMaterials, DamageErrors) {
                line_of(t, "damage = {"));
   t = with("strength = { kind = \"elastic\", shear_modulus = \"80 GPa\" }",
            "strength = { kind = \"hydrodynamic\" }\ndamage = { kind = \"johnson-cook\", d1 = 0.1, d2 = 1, d3 = -1 }");
-  expect_error(t, "materials.steel.damage.kind", "use strength kind \"johnson-cook\" or \"perfectly-plastic\"", -1);
+  expect_error(t, "materials.steel.damage.kind", "use strength kind \"perfectly-plastic\" or \"johnson-cook\"", -1);
 }
 
 TEST(CaseFileContacts, ReadsPairs) {
@@ -345,16 +345,16 @@ TEST(CaseFileLoad, PlateCasesShareTheWeldoxMaterialFile) {
   const auto& b = p12.materials[k12].params;
   EXPECT_EQ(a.damage.kind, impactsph::DamageKind::FractureEnergy);
   EXPECT_EQ(b.damage.kind, a.damage.kind);
-  EXPECT_EQ(b.damage.fracture_energy, a.damage.fracture_energy);
-  EXPECT_EQ(b.damage.band_width_factor, a.damage.band_width_factor);
-  EXPECT_EQ(b.strength.jc_a, a.strength.jc_a);
-  EXPECT_GT(a.damage.fracture_energy, 0);
+  EXPECT_EQ(b.damage.fracture_energy.gamma, a.damage.fracture_energy.gamma);
+  EXPECT_EQ(b.damage.fracture_energy.band_width_factor, a.damage.fracture_energy.band_width_factor);
+  EXPECT_EQ(b.strength.johnson_cook.a, a.strength.johnson_cook.a);
+  EXPECT_GT(a.damage.fracture_energy.gamma, 0);
   const double h0_2mm = p8.numerics.h_factor * 2e-3;
   const impactsph::Scene coarse = impactsph::build_scene(p8);
-  EXPECT_NEAR(coarse.materials[k].damage.critical_plastic_work,
-              a.damage.fracture_energy / (a.damage.band_width_factor * h0_2mm), 1e-9 * a.damage.fracture_energy / h0_2mm);
+  EXPECT_NEAR(coarse.materials[k].damage.fracture_energy.critical_work,
+              a.damage.fracture_energy.gamma / (a.damage.fracture_energy.band_width_factor * h0_2mm), 1e-9 * a.damage.fracture_energy.gamma / h0_2mm);
   const impactsph::Scene fine = impactsph::build_scene(impactsph::load_case_file(cases + "/plate-8mm/case.toml", {}, "1 mm"));
-  EXPECT_NEAR(fine.materials[k].damage.critical_plastic_work / coarse.materials[k].damage.critical_plastic_work, 2.0, 1e-12);
+  EXPECT_NEAR(fine.materials[k].damage.fracture_energy.critical_work / coarse.materials[k].damage.fracture_energy.critical_work, 2.0, 1e-12);
 }
 
 // The material files a case reads, for the run fingerprints (app/run_args.cpp): a changed material file

@@ -33,19 +33,19 @@ MaterialParams<double> alumina() {
   m.eos.k1 = 130.95e9;
   m.strength.kind = StrengthKind::JohnsonHolmquist2;
   m.strength.shear_modulus = 90.16e9;
-  m.strength.jh_a = 0.93;
-  m.strength.jh_b = 0.31;
-  m.strength.jh_c = 0.0;
-  m.strength.jh_m = 0.6;
-  m.strength.jh_n = 0.6;
-  m.strength.hel = 2.79e9;
-  m.strength.p_hel = 1.46e9;
-  m.strength.tensile_pressure = 0.2e9;
+  m.strength.jh2.a = 0.93;
+  m.strength.jh2.b = 0.31;
+  m.strength.jh2.c = 0.0;
+  m.strength.jh2.m = 0.6;
+  m.strength.jh2.n = 0.6;
+  m.strength.jh2.hel = 2.79e9;
+  m.strength.jh2.p_hel = 1.46e9;
+  m.strength.jh2.tensile_pressure = 0.2e9;
   m.strength.reference_strain_rate = 1.0;
   m.damage.kind = DamageKind::JohnsonHolmquist2;
-  m.damage.d1 = 0.005;
-  m.damage.d2 = 1.0;
-  m.damage.bulking = 1.0;
+  m.damage.jh2.d1 = 0.005;
+  m.damage.jh2.d2 = 1.0;
+  m.damage.jh2.bulking = 1.0;
   m.damage.scale_pairs = false;
   return m;
 }
@@ -130,14 +130,18 @@ TEST(Jh2, BulkingPressureFromLostElasticEnergy) {
   // No bulking without damage growth, with beta = 0, or for other materials; never decreasing.
   EXPECT_EQ(jh2_bulking_increment(m, rho, P, 0.5, 0.5, 0.0, 1e8), 1e8);
   MaterialParams<double> nb = m;
-  nb.damage.bulking = 0;
+  nb.damage.jh2.bulking = 0;
   EXPECT_EQ(jh2_bulking_increment(nb, rho, P, 0.0, 1.0, 0.0, 0.0), 0.0);
-  // The material pressure adds it to the EOS pressure for JH-2 only.
+  // The material pressure adds it to the EOS pressure for the JH-2 damage model only, and only that model
+  // grows it (damage_added_pressure dispatches to it).
   double c = 0;
   EXPECT_NEAR(material_pressure(m, rho, 0.0, dP, c), P + dP, 1e-3);
+  EXPECT_EQ(damage_added_pressure(m, rho, P, 0.0, 1.0, 0.0, 0.0), dP);
   MaterialParams<double> metal = m;
   metal.strength.kind = StrengthKind::JohnsonCook;
+  metal.damage.kind = DamageKind::JohnsonCook;
   EXPECT_NEAR(material_pressure(metal, rho, 0.0, dP, c), P, 1e-3);
+  EXPECT_EQ(damage_added_pressure(metal, rho, P, 0.0, 1.0, 0.0, 1e8), 1e8);
 }
 
 TEST(Jh2, PairDamageOnlyForMaterialsThatScalePairs) {
@@ -168,9 +172,9 @@ TEST(Jh2, FinishStepDamagesBulksAndRaisesThePressure) {
   metal.eos = m.eos;
   metal.strength.kind = StrengthKind::PerfectlyPlastic;
   metal.strength.shear_modulus = 80e9;
-  metal.strength.yield_stress = 1e9;
+  metal.strength.perfectly_plastic.yield_stress = 1e9;
   metal.damage.kind = DamageKind::CriticalPlasticStrain;
-  metal.damage.critical_plastic_strain = 0.1;
+  metal.damage.critical_plastic_strain.strain = 0.1;
   Sym3<double> Sm{1e8, -5e7, -5e7, 0, 0, 0};
   double eps_m = 0.09, wm = 0, Tm = 293, Dm = 0, Pm = 0, bm = 0;
   finish_step(metal, 3921 * 0.99, 0.0, Sm, eps_m, wm, Tm, Dm, Pm, bm, 0.02, 0.0, 0.0, 0.0);
@@ -183,24 +187,24 @@ TEST(Jh2, FinishStepDamagesBulksAndRaisesThePressure) {
 // The gpu port's float build takes every constant of the material, converted (convert_material).
 TEST(Jh2, MaterialConstantsConvertToFloat) {
   MaterialParams<double> m = alumina();
-  m.strength.sfmax = 0.8;
-  m.damage.min_failure_strain = 0.01;
+  m.strength.jh2.sfmax = 0.8;
+  m.damage.jh2.min_failure_strain = 0.01;
   m.specific_heat = 880;
   const MaterialParams<float> f = convert_material<float>(m);
   EXPECT_EQ(f.strength.kind, StrengthKind::JohnsonHolmquist2);
   EXPECT_EQ(f.damage.kind, DamageKind::JohnsonHolmquist2);
   EXPECT_EQ(f.eos.kind, EosKind::Polynomial);
   EXPECT_FLOAT_EQ(f.eos.k1, 130.95e9f);
-  EXPECT_FLOAT_EQ(f.strength.jh_a, 0.93f);
-  EXPECT_FLOAT_EQ(f.strength.jh_b, 0.31f);
-  EXPECT_FLOAT_EQ(f.strength.jh_m, 0.6f);
-  EXPECT_FLOAT_EQ(f.strength.hel, 2.79e9f);
-  EXPECT_FLOAT_EQ(f.strength.p_hel, 1.46e9f);
-  EXPECT_FLOAT_EQ(f.strength.tensile_pressure, 0.2e9f);
-  EXPECT_FLOAT_EQ(f.strength.sfmax, 0.8f);
-  EXPECT_FLOAT_EQ(f.damage.d1, 0.005f);
-  EXPECT_FLOAT_EQ(f.damage.bulking, 1.0f);
-  EXPECT_FLOAT_EQ(f.damage.min_failure_strain, 0.01f);
+  EXPECT_FLOAT_EQ(f.strength.jh2.a, 0.93f);
+  EXPECT_FLOAT_EQ(f.strength.jh2.b, 0.31f);
+  EXPECT_FLOAT_EQ(f.strength.jh2.m, 0.6f);
+  EXPECT_FLOAT_EQ(f.strength.jh2.hel, 2.79e9f);
+  EXPECT_FLOAT_EQ(f.strength.jh2.p_hel, 1.46e9f);
+  EXPECT_FLOAT_EQ(f.strength.jh2.tensile_pressure, 0.2e9f);
+  EXPECT_FLOAT_EQ(f.strength.jh2.sfmax, 0.8f);
+  EXPECT_FLOAT_EQ(f.damage.jh2.d1, 0.005f);
+  EXPECT_FLOAT_EQ(f.damage.jh2.bulking, 1.0f);
+  EXPECT_FLOAT_EQ(f.damage.jh2.min_failure_strain, 0.01f);
   EXPECT_FALSE(f.damage.scale_pairs);
   EXPECT_FLOAT_EQ(f.specific_heat, 880.0f);
   // The float flow stress follows the double one.

@@ -1,12 +1,12 @@
-// Unit tests of common/damage.hpp: Johnson-Cook failure strain (F eq 4.7) with the minimum failure strain
-// of X eq 33, the damage increment of each damage model (F eqs 4.8-4.9, X eq 32), the failed-particle
-// rule (no deviatoric stress, no tension), the damaged pair factor (F eq 4.10) and its use in the pass 1
-// gradient sums and the delta-SPH term.
+// Unit tests of common/damage.hpp and common/models/damage_*.hpp: Johnson-Cook failure strain (F eq 4.7)
+// with the minimum failure strain of X eq 33, the damage increment of each damage model (F eqs 4.8-4.9, X
+// eq 32), the failed-particle rule (no deviatoric stress, no tension), the damaged pair factor (F eq 4.10)
+// and its use in the pass 1 gradient sums and the delta-SPH term.
 //
 // F Table 2 gives no Johnson-Cook failure constants for Weldox 460 E (F uses the critical plastic strain,
 // eps_c = 0.3 target, 0.5 projectile). The failure-strain hand values use the tungsten alloy of X Table 2
-// (D1 = 0, D2 = 0.33, D3 = -1.50, D4 = D5 = 0) and, for the rate and temperature factors, a made-up set
-// (D1 = 0.05, D2 = 0.5, D3 = -1.2, D4 = 0.02, D5 = 0.6). Hand values: 30-digit arithmetic.
+// (D1 = 0, D2 = 0.33, D3 = -1.50, D4 = D5 = 0) and, for the rate and temperature factors, a made-up set (D1
+// = 0.05, D2 = 0.5, D3 = -1.2, D4 = 0.02, D5 = 0.6). Hand values: 30-digit arithmetic.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,11 +34,11 @@ template <class Real>
 DamageParams<Real> tungsten_failure() {  // X Table 2
   DamageParams<Real> d;
   d.kind = DamageKind::JohnsonCook;
-  d.d1 = Real(0);
-  d.d2 = Real(0.33);
-  d.d3 = Real(-1.5);
-  d.d4 = Real(0);
-  d.d5 = Real(0);
+  d.johnson_cook.d1 = Real(0);
+  d.johnson_cook.d2 = Real(0.33);
+  d.johnson_cook.d3 = Real(-1.5);
+  d.johnson_cook.d4 = Real(0);
+  d.johnson_cook.d5 = Real(0);
   return d;
 }
 
@@ -64,15 +64,15 @@ TYPED_TEST(DamageTyped, FailureStrainHandValuesAndMinimum) {
   EXPECT_NEAR(ef(1), 0.0736329528489818435, tol);
   // Decreasing with triaxiality (D3 < 0): tension fails sooner.
   EXPECT_GT(ef(-0.2), ef(0.2));
-  d.min_failure_strain = Real(0.25);
+  d.johnson_cook.min_failure_strain = Real(0.25);
   EXPECT_EQ(ef(1.0 / 3), 0.25);      // bound active
   EXPECT_EQ(ef(1), 0.25);            // bound active
   EXPECT_NEAR(ef(0), 0.33, tol);     // bound inactive
   EXPECT_NEAR(ef(-0.5), 0.698610005482182641, tol);
   // Huge compression (sigma_eq -> 0 with P > 0): finite, and no 0 x inf when D2 = 0.
   EXPECT_TRUE(std::isfinite(ef(-1e9)));
-  d.d2 = 0;
-  d.d1 = Real(0.4);
+  d.johnson_cook.d2 = 0;
+  d.johnson_cook.d1 = Real(0.4);
   EXPECT_EQ(ef(-1e9), Real(0.4));
 }
 
@@ -82,11 +82,11 @@ TYPED_TEST(DamageTyped, FailureStrainRateAndTemperature) {
   using Real = TypeParam;
   DamageParams<Real> d;
   d.kind = DamageKind::JohnsonCook;
-  d.d1 = Real(0.05);
-  d.d2 = Real(0.5);
-  d.d3 = Real(-1.2);
-  d.d4 = Real(0.02);
-  d.d5 = Real(0.6);
+  d.johnson_cook.d1 = Real(0.05);
+  d.johnson_cook.d2 = Real(0.5);
+  d.johnson_cook.d3 = Real(-1.2);
+  d.johnson_cook.d4 = Real(0.02);
+  d.johnson_cook.d5 = Real(0.6);
   EXPECT_NEAR(double(johnson_cook_failure_strain(d, Real(-0.2), Real(1e4), Real(0.4))), 1.00678239867388747,
               10 * rel_tol<Real>());
   const Real at1 = johnson_cook_failure_strain(d, Real(-0.2), Real(1), Real(0));
@@ -107,7 +107,7 @@ TYPED_TEST(DamageTyped, DamageIncrementPerModel) {
   EXPECT_EQ(damage_increment(m, Real(0.5), Real(5), Real(0), Real(-1e9), Real(1e8), Real(1e4), Real(293)), Real(0));
   // Critical plastic strain, Weldox target eps_c = 0.3 (F Table 2): D jumps to 1 at eps_p >= eps_c.
   m.damage.kind = DamageKind::CriticalPlasticStrain;
-  m.damage.critical_plastic_strain = Real(0.3);
+  m.damage.critical_plastic_strain.strain = Real(0.3);
   EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.29), Real(0), Real(0), Real(5e8), Real(1e3), Real(293)), Real(0));
   EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.3), Real(0), Real(0), Real(5e8), Real(1e3), Real(293)), Real(1));
   EXPECT_EQ(damage_increment(m, Real(0.01), Real(0.31), Real(0), Real(0), Real(5e8), Real(1e3), Real(293)), Real(1));
@@ -120,19 +120,19 @@ TYPED_TEST(DamageTyped, DamageIncrementPerModel) {
   EXPECT_EQ(damage_increment(m, Real(0), Real(0.2), Real(0), Real(-100e6), Real(300e6), Real(1e3), Real(293)), Real(0));
   // Rate and temperature reach the failure strain through the material (made-up constants as above):
   // eps_dot = 5 1/s over eps_dot0 = 5e-4 gives eps* = 1e4; T = 293 + 0.4 x 1507 K gives T* = 0.4.
-  m.damage.d1 = Real(0.05);
-  m.damage.d2 = Real(0.5);
-  m.damage.d3 = Real(-1.2);
-  m.damage.d4 = Real(0.02);
-  m.damage.d5 = Real(0.6);
+  m.damage.johnson_cook.d1 = Real(0.05);
+  m.damage.johnson_cook.d2 = Real(0.5);
+  m.damage.johnson_cook.d3 = Real(-1.2);
+  m.damage.johnson_cook.d4 = Real(0.02);
+  m.damage.johnson_cook.d5 = Real(0.6);
   m.strength.reference_strain_rate = Real(5e-4);
   m.strength.melt_temperature = Real(1800);
   EXPECT_NEAR(double(damage_increment(m, Real(0.01), Real(0.2), Real(0), Real(0.2 * 300e6), Real(300e6), Real(5),
                                       Real(293 + 0.4 * 1507))),
               0.01 / 1.00678239867388747, 100 * rel_tol<Real>());
   // Unphysical constants with no minimum: eps_f <= 0 fails the particle at its first plastic step.
-  m.damage.d1 = Real(-1);
-  m.damage.d2 = Real(0);
+  m.damage.johnson_cook.d1 = Real(-1);
+  m.damage.johnson_cook.d2 = Real(0);
   EXPECT_EQ(damage_increment(m, Real(1e-6), Real(1e-6), Real(0), Real(0), Real(1e8), Real(1), Real(293)), Real(1));
 }
 
@@ -330,26 +330,26 @@ TEST(DamagedGradient, LinearFieldExactAtIntactParticleBesideFailedLayer) {
   }
 }
 
-// Crack-band criterion (damage.hpp): W_c = Gamma / (k h0), and D jumps to 1 once rho0 w_p reaches it.
+// Crack-band criterion (common/models/damage_fracture_energy.hpp): W_c = Gamma / (k h0), and D jumps to 1 once rho0 w_p reaches it.
 TEST(FractureEnergy, FailsAtCriticalWorkOfBandWidth) {
   MaterialParams<double> m;
   m.eos.rho0 = 7850;
   m.damage.kind = DamageKind::FractureEnergy;
-  m.damage.fracture_energy = 2.0e5;   // J/m^2
-  m.damage.band_width_factor = 2.0;   // band of 2 h0
+  m.damage.fracture_energy.gamma = 2.0e5;   // J/m^2
+  m.damage.fracture_energy.band_width_factor = 2.0;   // band of 2 h0
   const double h0 = 1.2e-3;
-  m.damage.critical_plastic_work = fracture_energy_critical_work(m.damage, h0);
-  EXPECT_NEAR(m.damage.critical_plastic_work, 2.0e5 / (2.0 * 1.2e-3), 1e-6);
-  const double w_c = m.damage.critical_plastic_work / m.eos.rho0;  // J/kg
+  m.damage.fracture_energy.critical_work = fracture_energy_critical_work(m.damage, h0);
+  EXPECT_NEAR(m.damage.fracture_energy.critical_work, 2.0e5 / (2.0 * 1.2e-3), 1e-6);
+  const double w_c = m.damage.fracture_energy.critical_work / m.eos.rho0;  // J/kg
   EXPECT_EQ(damage_increment(m, 0.01, 0.5, 0.999 * w_c, 0.0, 5e8, 1e3, 293.0), 0.0);
   EXPECT_EQ(damage_increment(m, 0.01, 0.5, w_c, 0.0, 5e8, 1e3, 293.0), 1.0);
   // No failure on an elastic step, nor while W_c is unset (a material the scene has not sized).
   EXPECT_EQ(damage_increment(m, 0.0, 0.5, w_c, 0.0, 5e8, 1e3, 293.0), 0.0);
   MaterialParams<double> unsized = m;
-  unsized.damage.critical_plastic_work = 0;
+  unsized.damage.fracture_energy.critical_work = 0;
   EXPECT_EQ(damage_increment(unsized, 0.01, 0.0, 0.0, 0.0, 5e8, 1e3, 293.0), 0.0);
   // Halving h0 doubles the work density at failure: the energy per unit area, W_c k h0, stays Gamma.
-  EXPECT_NEAR(fracture_energy_critical_work(m.damage, 0.5 * h0) * m.damage.band_width_factor * 0.5 * h0, 2.0e5, 1e-6);
+  EXPECT_NEAR(fracture_energy_critical_work(m.damage, 0.5 * h0) * m.damage.fracture_energy.band_width_factor * 0.5 * h0, 2.0e5, 1e-6);
 }
 
 // At the spacing where Gamma = W_p(eps_c) k h0, the fracture-energy criterion fails a particle on the same
@@ -361,7 +361,7 @@ TEST(FractureEnergy, ReducesToCriticalPlasticStrainAtTheMatchingGamma) {
   m.eos.rho0 = 7850; m.eos.c0 = 5047.6; m.eos.s1 = 1.5; m.eos.gamma0 = 2.0;
   m.strength.kind = StrengthKind::JohnsonCook;
   m.strength.shear_modulus = 200e9 / (2 * 1.33);
-  m.strength.jc_a = 490e6; m.strength.jc_b = 807e6; m.strength.jc_n = 0.73; m.strength.jc_c = 0.0114;
+  m.strength.johnson_cook.a = 490e6; m.strength.johnson_cook.b = 807e6; m.strength.johnson_cook.n = 0.73; m.strength.johnson_cook.c = 0.0114;
   m.strength.reference_strain_rate = 5e-4;
   const double rate = 1e4, dt = 2e-8;
   // One strain path, returning the step on which each model fails and the work at eps_p = 0.3.
@@ -385,7 +385,7 @@ TEST(FractureEnergy, ReducesToCriticalPlasticStrainAtTheMatchingGamma) {
   };
   MaterialParams<double> critical = m;
   critical.damage.kind = DamageKind::CriticalPlasticStrain;
-  critical.damage.critical_plastic_strain = 0.3;
+  critical.damage.critical_plastic_strain.strain = 0.3;
   double w_c = 0;
   const int step_critical = first_failure(critical, w_c);
   ASSERT_GT(step_critical, 0);
@@ -393,13 +393,13 @@ TEST(FractureEnergy, ReducesToCriticalPlasticStrainAtTheMatchingGamma) {
   const double h0_2mm = 1.2 * 2e-3;
   MaterialParams<double> band = m;
   band.damage.kind = DamageKind::FractureEnergy;
-  band.damage.band_width_factor = 2.0;
-  band.damage.fracture_energy = m.eos.rho0 * w_c * band.damage.band_width_factor * h0_2mm;
-  band.damage.critical_plastic_work = fracture_energy_critical_work(band.damage, h0_2mm);
+  band.damage.fracture_energy.band_width_factor = 2.0;
+  band.damage.fracture_energy.gamma = m.eos.rho0 * w_c * band.damage.fracture_energy.band_width_factor * h0_2mm;
+  band.damage.fracture_energy.critical_work = fracture_energy_critical_work(band.damage, h0_2mm);
   double unused = 0;
   EXPECT_EQ(first_failure(band, unused), step_critical);
   // At 1 mm the same Gamma asks for twice the work: the particle fails later, at a larger plastic strain.
-  band.damage.critical_plastic_work = fracture_energy_critical_work(band.damage, 0.5 * h0_2mm);
+  band.damage.fracture_energy.critical_work = fracture_energy_critical_work(band.damage, 0.5 * h0_2mm);
   EXPECT_GT(first_failure(band, unused), step_critical);
 }
 

@@ -1,11 +1,11 @@
-// Unit tests of the Johnson-Cook flow stress (F eqs 3.12-3.13, X eq 29; common/strength.hpp and
-// johnson_cook_yield in common/material.hpp), of equivalent_strain_rate, and of the plastic step
+// Unit tests of the Johnson-Cook flow stress (F eqs 3.12-3.13, X eq 29;
+// common/models/strength_johnson_cook.hpp), of equivalent_strain_rate, and of the plastic step
 // plastic_update (radial return F eqs 3.8-3.11 as corrected in physics-notes, adiabatic heating F eq 3.14).
 //
 // Weldox 460 E constants: A = 490 MPa, B = 807 MPa, n = 0.73, C = 0.0114 from F Table 2. F Table 2 gives
-// neither the reference strain rate nor the thermal constants (F neglects thermal effects); the values
-// used here, eps_dot0 = 5e-4 1/s, m = 0.94, T_melt = 1800 K, T_room = 293 K, c_p = 452 J/(kg K), are those
-// of Borvik et al. (2001) for the same steel. Hand values below were computed with 30-digit arithmetic.
+// neither the reference strain rate nor the thermal constants (F neglects thermal effects); the values used
+// here, eps_dot0 = 5e-4 1/s, m = 0.94, T_melt = 1800 K, T_room = 293 K, c_p = 452 J/(kg K), are those of
+// Borvik et al. (2001) for the same steel. Hand values below were computed with 30-digit arithmetic.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,11 +34,11 @@ StrengthParams<Real> weldox_strength() {
   StrengthParams<Real> p;
   p.kind = StrengthKind::JohnsonCook;
   p.shear_modulus = Real(200e9 / (2 * 1.33));  // E = 200 GPa, nu = 0.33 (F Table 2)
-  p.jc_a = Real(490e6);
-  p.jc_b = Real(807e6);
-  p.jc_n = Real(0.73);
-  p.jc_c = Real(0.0114);
-  p.jc_m = Real(0.94);
+  p.johnson_cook.a = Real(490e6);
+  p.johnson_cook.b = Real(807e6);
+  p.johnson_cook.n = Real(0.73);
+  p.johnson_cook.c = Real(0.0114);
+  p.johnson_cook.m = Real(0.94);
   p.reference_strain_rate = Real(5e-4);
   p.melt_temperature = Real(1800);
   p.taylor_quinney = Real(0.9);
@@ -59,16 +59,16 @@ MaterialParams<Real> weldox_material() {
 TYPED_TEST(JohnsonCookTyped, InitialYieldIsA) {
   using Real = TypeParam;
   const StrengthParams<Real> p = weldox_strength<Real>();
-  EXPECT_EQ(johnson_cook_yield(p, Real(0), p.reference_strain_rate, Real(kRoom), Real(kRoom)), p.jc_a);
+  EXPECT_EQ(johnson_cook_yield(p, Real(0), p.reference_strain_rate, Real(kRoom), Real(kRoom)), p.johnson_cook.a);
   // No NaN from pow(0, n) or log(0): zero rate and zero plastic strain.
-  EXPECT_EQ(johnson_cook_yield(p, Real(0), Real(0), Real(kRoom), Real(kRoom)), p.jc_a);
+  EXPECT_EQ(johnson_cook_yield(p, Real(0), Real(0), Real(kRoom), Real(kRoom)), p.johnson_cook.a);
   // A negative plastic strain (never produced, but not a NaN either) reads as 0.
-  EXPECT_EQ(johnson_cook_yield(p, Real(-1e-3), Real(0), Real(kRoom), Real(kRoom)), p.jc_a);
+  EXPECT_EQ(johnson_cook_yield(p, Real(-1e-3), Real(0), Real(kRoom), Real(kRoom)), p.johnson_cook.a);
   // n = 0: eps_p^0 = 1 for every eps_p >= 0, including its limit at 0 (A + B throughout, no jump).
   StrengthParams<Real> flat = p;
-  flat.jc_n = 0;
-  EXPECT_EQ(johnson_cook_yield(flat, Real(0), Real(0), Real(kRoom), Real(kRoom)), p.jc_a + p.jc_b);
-  EXPECT_EQ(johnson_cook_yield(flat, Real(0.3), Real(0), Real(kRoom), Real(kRoom)), p.jc_a + p.jc_b);
+  flat.johnson_cook.n = 0;
+  EXPECT_EQ(johnson_cook_yield(flat, Real(0), Real(0), Real(kRoom), Real(kRoom)), p.johnson_cook.a + p.johnson_cook.b);
+  EXPECT_EQ(johnson_cook_yield(flat, Real(0.3), Real(0), Real(kRoom), Real(kRoom)), p.johnson_cook.a + p.johnson_cook.b);
 }
 
 // Hand values for Weldox 460 E (F Table 2 constants, see the file comment):
@@ -242,7 +242,7 @@ TYPED_TEST(JohnsonCookTyped, PlasticUpdateLeavesElasticAndBelowYieldAlone) {
 TEST(PlasticUpdate, PerfectlyPlasticIsTheRadialReturnWhateverTheState) {
   MaterialParams<double> m = weldox_material<double>();
   m.strength.kind = StrengthKind::PerfectlyPlastic;
-  m.strength.yield_stress = 4.9e8;
+  m.strength.perfectly_plastic.yield_stress = 4.9e8;
   const Sym3<double> trial{9e8, -4e8, -5e8, 2e8, -1e8, 1.5e8};
   Sym3<double> a = trial, b = trial, c = trial;
   const double da = plastic_update(m, a, 0.0, 0.0, m.room_temperature, m.eos.rho0, 0.0, 0.0).d_eps_p;
@@ -273,7 +273,7 @@ void run_uniaxial_strain(double tol) {
   m.eos.rho0 = Real(rho);
   m.strength.kind = StrengthKind::PerfectlyPlastic;
   m.strength.shear_modulus = Real(G);
-  m.strength.yield_stress = Real(sy);
+  m.strength.perfectly_plastic.yield_stress = Real(sy);
   const double eps_y = sy / (2 * G), hel = (K + 4 * G / 3) * eps_y;
   EXPECT_NEAR(hel, sy * (1 - nu) / (1 - 2 * nu), 1e-12 * hel);
 

@@ -202,7 +202,7 @@ TEST(StrengthDispatch, MaterialSelectsStrengthModel) {
   EXPECT_EQ(r1.xx, ref.xx);
   EXPECT_EQ(r1.xy, ref.xy);
   EXPECT_EQ(r1.zx, ref.zx);
-  m.strength.yield_stress = 1e6;  // far below von Mises of S, but Elastic never yields
+  m.strength.perfectly_plastic.yield_stress = 1e6;  // far below von Mises of S, but Elastic never yields
   Sym3<double> s1 = S;
   EXPECT_EQ(plastic_update(m, s1, 0.0, 0.0, m.room_temperature, m.eos.rho0, 0.0, 0.0).d_eps_p, 0.0);
   EXPECT_EQ(s1.xx, S.xx);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Does the plate's answer converge with the spacing under a failure criterion with a length of its own?
 # Runs the 8 mm plate at one impact speed at 2, 1.333 and 1 mm with the fracture-energy criterion of the
-# Weldox material file (common/damage.hpp, crack band) and with F's critical plastic strain 0.3 (F eq 4.9),
+# Weldox material file (common/models/damage_fracture_energy.hpp, crack band) and with F's critical plastic strain 0.3 (F eq 4.9),
 # then writes cases/plate-8mm/report-fracture-energy/report-VELOCITY.md from the runs' summary.json files and VTU
 # frames (nothing typed in): residual velocity against the experiments' Recht-Ipson curve, plug, the
 # band's energy width at the first failures (shear_band.py), steps, wall time, energy drift.

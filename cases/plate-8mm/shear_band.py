@@ -19,7 +19,7 @@ lattice spacing, read from the particle masses), the mean of the two outermost r
 background, and the width is the area under the profile above it divided by its peak above it,
   w = sum_rings (W_ring - W_bg) dx/2 / (W_peak - W_bg),
 printed in mm and in initial smoothing lengths h0 = h_factor dx (h_factor from the run's summary.json,
-else 1.2). It is the width the crack-band criterion assumes (common/damage.hpp): a band that dissipates
+else 1.2). It is the width the crack-band criterion assumes (common/models/damage_fracture_energy.hpp): a band that dissipates
 Gamma per unit area fails where its peak reaches Gamma / w. The axis is the line x = y = 0 along z (the
 plate cases' quarter models); the target is body 0 and the projectile body 1, the order of the case's
 [[bodies]]. Standard library only.

@@ -1,0 +1,16 @@
+// Strength model "hydrodynamic": no deviatoric stress (Hugoniot tests, fluids). No constants.
+#pragma once
+#include "common/models/model_base.hpp"
+
+namespace impactsph {
+
+struct HydrodynamicStrength : StrengthModelDefaults {
+  static constexpr const char* key = "hydrodynamic";
+  static constexpr bool deviatoric = false;
+  static constexpr bool plastic = false;
+  template <class Real> struct Params {
+    template <class To> Params<To> to() const { return {}; }
+  };
+};
+
+}  // namespace impactsph
