@@ -19,11 +19,11 @@
 #include "app/gnuplot.hpp"
 #include "app/picture.hpp"
 #include "app/run_args.hpp"
+#include "app/solver_choice.hpp"
 #include "common/case_file.hpp"
 #include "common/driver.hpp"
 #include "common/expected.hpp"
 #include "gpu/solver.hpp"
-#include "reference/solver.hpp"
 
 namespace impactsph::verify_detail {
 
@@ -53,20 +53,18 @@ SideBySide side_by_side(const std::string& what, const std::string& file, const 
   const Scene scene = build_scene(load_case_file(file, sets, h));
   const std::vector<Vec3d> x0 = scene.particles.pos;
   std::vector<std::unique_ptr<Live>> live;
-  auto add = [&](const std::string& backend, const std::string& precision,
-                 const std::function<std::unique_ptr<Stepper>(const Scene&)>& make) {
+  auto add = [&](const std::string& backend, const std::string& precision) {
     auto l = std::make_unique<Live>();
     l->scene = scene;
-    l->solver = make(l->scene);
+    l->solver = make_stepper(l->scene, backend, precision);
     if (wave) l->probe = std::make_unique<verification::ElasticWaveProbe>(l->scene);
     l->side.backend = backend;
     l->side.precision = precision;
     l->side.name = l->solver->name();
     live.push_back(std::move(l));
   };
-  add("reference", "double", [](const Scene& s) { return std::make_unique<reference::ReferenceSolver>(s); });
-  for (const gpu::Precision pr : precisions)
-    add("gpu", gpu::precision_name(pr), [pr](const Scene& s) { return gpu::make_solver(s, pr); });
+  add("reference", "double");
+  for (const gpu::Precision pr : precisions) add("gpu", gpu::precision_name(pr));
 
   Live& ref = *live[0];
   const double end = scene.spec.time.end;
@@ -83,6 +81,7 @@ SideBySide side_by_side(const std::string& what, const std::string& file, const 
       c0 = std::chrono::steady_clock::now();
       const double own = l.solver->stable_time_step(l.scene.particles);
       l.solver->step(l.scene.particles, dt);
+      l.solver->copy_to_host(l.scene.particles);  // the probe reads the particles after every step
       l.side.wall_s += seconds_since(c0);
       l.side.dt_deviation = std::max(l.side.dt_deviation, std::abs(own / dt_ref - 1));
     }
@@ -247,11 +246,7 @@ Observable validation_observable(const std::string& series) {
 std::vector<Solver> port_solvers() {
   std::vector<Solver> out;
   for (const gpu::Precision pr : {gpu::Precision::Double, gpu::Precision::Float})
-    out.push_back({"gpu", gpu::precision_name(pr), [pr](const Scene& s) -> std::unique_ptr<Stepper> {
-                     std::unique_ptr<gpu::GpuStepper> g = gpu::make_solver(s, pr);
-                     g->defer_host_copies(true);
-                     return g;
-                   }});
+    out.push_back({"gpu", gpu::precision_name(pr), [pr](const Scene& s) { return make_stepper(s, "gpu", gpu::precision_name(pr)); }});
   return out;
 }
 
