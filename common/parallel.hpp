@@ -7,6 +7,10 @@
 #include <cstdint>
 #include <limits>
 
+#if defined(_OPENMP)
+#include <omp.h>
+#endif
+
 // IMPACTSPH_FLATTEN after a loop body's parameter list, [&](std::int64_t i) IMPACTSPH_FLATTEN { ... }: every
 // call in the body is inlined. Without it GCC 12 inlined the pair functions less deeply into a lambda than
 // into a plain OpenMP loop, and the reference's step ran 7 % slower. (Floating-point contraction is off,
@@ -18,6 +22,15 @@
 #endif
 
 namespace impactsph {
+
+// The number of threads a parallel loop below runs on (1 without OpenMP).
+inline std::int64_t parallel_thread_count() {
+#if defined(_OPENMP)
+  return omp_get_max_threads();
+#else
+  return 1;
+#endif
+}
 
 // f(i) for every i in [0, n), spread over the host's threads.
 template <class F> void parallel_for(std::int64_t n, F&& f) {

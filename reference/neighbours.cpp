@@ -1,11 +1,11 @@
 #include "reference/neighbours.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "common/parallel.hpp"
 
 namespace impactsph::reference {
 
@@ -69,36 +69,30 @@ void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_co
       }
   };
 
-  // One pass: each thread gathers the rows of its contiguous block of queries into its own buffer; the
-  // buffers are then laid end to end in thread order, so the list is the same for any thread count.
+  // One pass: the queries are cut into one contiguous block per thread, each block gathers its rows into
+  // its own buffer, and the buffers are laid end to end in block order. The list is the rows in query order
+  // whatever the number of blocks.
+  const std::int64_t blocks = parallel_thread_count();
+  auto block_begin = [&](std::int64_t b) {
+    return query_count * static_cast<std::size_t>(b) / static_cast<std::size_t>(blocks);
+  };
   std::vector<std::int64_t> counts(query_count);
-  std::vector<std::vector<std::int32_t>> buffers;
-  std::vector<std::size_t> block_start;
-#pragma omp parallel
-  {
-#pragma omp single
-    {
-      const std::size_t threads = static_cast<std::size_t>(omp_get_num_threads());
-      buffers.resize(threads);
-      block_start.resize(threads + 1);
-      for (std::size_t t = 0; t <= threads; ++t) block_start[t] = query_count * t / threads;
-    }
-    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
-    std::vector<std::int32_t>& buf = buffers[t];
-    buf.reserve((block_start[t + 1] - block_start[t]) * 64);
-    for (std::size_t i = block_start[t]; i < block_start[t + 1]; ++i) {
+  std::vector<std::vector<std::int32_t>> buffers(static_cast<std::size_t>(blocks));
+  parallel_for(blocks, [&](std::int64_t b) {
+    std::vector<std::int32_t>& buf = buffers[static_cast<std::size_t>(b)];
+    buf.reserve((block_begin(b + 1) - block_begin(b)) * 64);
+    for (std::size_t i = block_begin(b); i < block_begin(b + 1); ++i) {
       const std::size_t before = buf.size();
       visit(i, [&](std::int32_t j) { buf.push_back(j); });
       counts[i] = static_cast<std::int64_t>(buf.size() - before);
     }
-  }
+  });
   for (std::size_t i = 0; i < query_count; ++i) out.offsets[i + 1] = out.offsets[i] + counts[i];
   out.indices.resize(static_cast<std::size_t>(out.offsets[query_count]));
-#pragma omp parallel for schedule(static, 1)
-  for (std::int64_t t = 0; t < static_cast<std::int64_t>(buffers.size()); ++t) {
-    const std::vector<std::int32_t>& buf = buffers[static_cast<std::size_t>(t)];
-    std::copy(buf.begin(), buf.end(), out.indices.begin() + out.offsets[block_start[static_cast<std::size_t>(t)]]);
-  }
+  parallel_for(blocks, [&](std::int64_t b) {
+    const std::vector<std::int32_t>& buf = buffers[static_cast<std::size_t>(b)];
+    std::copy(buf.begin(), buf.end(), out.indices.begin() + out.offsets[block_begin(b)]);
+  });
 }
 
 }  // namespace impactsph::reference
