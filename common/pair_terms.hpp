@@ -15,12 +15,17 @@ namespace impactsph {
 template <class Real>
 struct GradientSums {
   Mat3<Real> L;          // correction matrix -sum V_j gw (x) x_ij, dimensionless
-  Mat3<Real> L_damaged;  // the same with each pair scaled by 1 - D_ij, dimensionless
+  Mat3<Real> L_damaged;  // the same with each pair scaled by 1 - D_ij, dimensionless; summed once apart
   Mat3<Real> G;          // uncorrected velocity gradient sum (1 - D_ij) V_j (v_j - v_i) (x) gw, 1/s
   Vec3<Real> grad_rho;   // uncorrected density gradient sum (1 - D_ij) V_j (rho_j - rho_i) gw, kg/m^4
+  // Whether L_damaged is summed apart: until a pair enters it with another weight than L's, the two hold
+  // the same sum, so L_damaged is not summed and damaged_L() is L (the same bits, a third fewer products
+  // in an intact neighbourhood).
+  bool apart;
   IMPACTSPH_HD static GradientSums zero() {
-    return {Mat3<Real>::zero(), Mat3<Real>::zero(), Mat3<Real>::zero(), Vec3<Real>{Real(0), Real(0), Real(0)}};
+    return {Mat3<Real>::zero(), Mat3<Real>::zero(), Mat3<Real>::zero(), Vec3<Real>{Real(0), Real(0), Real(0)}, false};
   }
+  IMPACTSPH_HD const Mat3<Real>& damaged_L() const { return apart ? L_damaged : L; }
 };
 
 // Neighbour j's share of the pass 1 sums: v_ji = v_j - v_i, drho_ji = rho_j - rho_i, damage_i and damage_j
@@ -41,9 +46,13 @@ struct GradientSums {
 template <class Real>
 IMPACTSPH_HD void add_gradient_pair(GradientSums<Real>& s, Real vol_j, Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> v_ji,
                                     Real drho_ji, Real damage_i, Real damage_j, bool crack_face) {
-  accumulate_correction(s.L, vol_j, gw, xij);
   const Real vf = crack_face ? Real(0) : damaged_pair_factor(damage_i, damage_j) * vol_j;
-  accumulate_correction(s.L_damaged, vf, gw, xij);
+  if (!s.apart && !(vf == vol_j)) {
+    s.L_damaged = s.L;
+    s.apart = true;
+  }
+  accumulate_correction(s.L, vol_j, gw, xij);
+  if (s.apart) accumulate_correction(s.L_damaged, vf, gw, xij);
   s.G = s.G + vf * outer(v_ji, gw);
   s.grad_rho += (vf * drho_ji) * gw;
 }
@@ -64,9 +73,9 @@ IMPACTSPH_HD CorrectedGradients<Real> corrected_gradients(const GradientSums<Rea
   CorrectedGradients<Real> r;
   r.l_inverse = correction_inverse(s.L, p, r.fell_back);
   Mat3<Real> gradient_inverse = r.l_inverse;
-  if (!exactly_equal(s.L_damaged, s.L)) {
+  if (!exactly_equal(s.damaged_L(), s.L)) {
     bool damaged_fell_back = true;
-    const Mat3<Real> inv = correction_inverse(s.L_damaged, p, damaged_fell_back);
+    const Mat3<Real> inv = correction_inverse(s.damaged_L(), p, damaged_fell_back);
     if (!damaged_fell_back) gradient_inverse = inv;
   }
   r.grad_v = s.G * gradient_inverse.transpose();

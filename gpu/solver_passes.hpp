@@ -12,7 +12,7 @@ template <class Real> IMPACTSPH_HD void add_flat(Real* sum, const GradientSums<R
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) {
       sum[3 * r + c] += g.L.m[r][c];
-      sum[9 + 3 * r + c] += g.L_damaged.m[r][c];
+      sum[9 + 3 * r + c] += g.damaged_L().m[r][c];
       sum[18 + 3 * r + c] += g.G.m[r][c];
     }
   sum[27] += g.grad_rho.x;
@@ -28,6 +28,7 @@ template <class Real> IMPACTSPH_HD GradientSums<Real> unflatten_gradient_sums(co
       g.G.m[r][c] = sum[18 + 3 * r + c];
     }
   g.grad_rho = Vec3<Real>{sum[27], sum[28], sum[29]};
+  g.apart = true;
   return g;
 }
 

@@ -212,9 +212,9 @@ TYPED_TEST(DamageTyped, GradientPairScalesWithDamageFactor) {
       EXPECT_NE(intact.G.m[a][b], Real(0));
       EXPECT_NEAR(half.G.m[a][b], Real(0.5) * intact.G.m[a][b], tol * std::abs(intact.G.m[a][b]));
       EXPECT_EQ(failed.G.m[a][b], Real(0));
-      EXPECT_EQ(intact.L_damaged.m[a][b], intact.L.m[a][b]);
-      EXPECT_NEAR(half.L_damaged.m[a][b], Real(0.5) * intact.L.m[a][b], tol * std::abs(intact.L.m[a][b]));
-      EXPECT_EQ(failed.L_damaged.m[a][b], Real(0));
+      EXPECT_EQ(intact.damaged_L().m[a][b], intact.L.m[a][b]);
+      EXPECT_NEAR(half.damaged_L().m[a][b], Real(0.5) * intact.L.m[a][b], tol * std::abs(intact.L.m[a][b]));
+      EXPECT_EQ(failed.damaged_L().m[a][b], Real(0));
     }
     EXPECT_NEAR(half.grad_rho[a], Real(0.5) * intact.grad_rho[a], tol * std::abs(intact.grad_rho[a]));
     EXPECT_EQ(failed.grad_rho[a], Real(0));
