@@ -98,6 +98,40 @@ void BM_CudaPhases(benchmark::State& state) {
   set_counters(state, scene.particles.size(), solver->last_stats().mean_neighbours, process_cpu_seconds() - cpu0);
 }
 
+// Whole steps against the neighbour count: the 8000-particle block at h = h_factor x spacing, the second
+// argument h_factor x 100 (1.0 to 2.0, the range a case file allows). Run one thread (OMP_NUM_THREADS=1)
+// for the speed per core; benchmarks/speed-vs-neighbours.sh runs them and writes docs/speed/.
+template <class MakeSolver>
+void step_against_neighbours(benchmark::State& state, MakeSolver make) {
+  Scene scene = block(side(state), double(state.range(1)) / 100);
+  std::unique_ptr<Stepper> solver = make(scene);
+  solver->step(scene.particles, solver->stable_time_step(scene.particles));
+  const double cpu0 = process_cpu_seconds();
+  for (auto _ : state) {
+    const double dt = solver->stable_time_step(scene.particles);
+    solver->step(scene.particles, dt);
+  }
+  set_counters(state, scene.particles.size(), solver->last_stats().mean_neighbours, process_cpu_seconds() - cpu0);
+}
+void BM_NeighboursReference(benchmark::State& state) {
+  step_against_neighbours(state, [](const Scene& s) { return std::make_unique<reference::ReferenceSolver>(s); });
+}
+template <gpu::Precision P>
+void BM_NeighboursGpuHost(benchmark::State& state) {
+  step_against_neighbours(state, [](const Scene& s) {
+    std::unique_ptr<gpu::GpuStepper> g = gpu::host::make_solver(s, P);
+    g->defer_host_copies(true);
+    return g;
+  });
+}
+void neighbour_args(benchmark::internal::Benchmark* b) {
+  for (const int h : {100, 120, 150, 200}) b->Args({8000, h});
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+BENCHMARK(BM_NeighboursReference)->Apply(neighbour_args);
+BENCHMARK_TEMPLATE(BM_NeighboursGpuHost, gpu::Precision::Float)->Apply(neighbour_args);
+BENCHMARK_TEMPLATE(BM_NeighboursGpuHost, gpu::Precision::Double)->Apply(neighbour_args);
+
 BENCHMARK(BM_ReferenceStep)->Args({8000, 0})->Args({103823, 0})->Unit(benchmark::kMillisecond)->UseRealTime();
 // Second argument 1: also time the phases (host clock), reported as <phase>_s_per_call.
 BENCHMARK_TEMPLATE(BM_GpuHostStep, gpu::Precision::Float)
