@@ -3,10 +3,13 @@
 // by objectivity under a rigid spin integrated with RK4), and the von Mises radial return.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include "common/material.hpp"
 #include "common/strength.hpp"
@@ -210,6 +213,38 @@ TEST(StrengthDispatch, MaterialSelectsStrengthModel) {
   Sym3<double> s2 = S;
   EXPECT_GT(plastic_update(m, s2, 0.0, 0.0, m.room_temperature, m.eos.rho0, 0.0, 0.0).d_eps_p, 0.0);
   EXPECT_NEAR(von_mises(s2), 1e6, 1e-6);
+}
+
+// The registry of material.hpp: every registered model has its own case key, which names it back, in the
+// order of the lists; the enumerators follow the same order.
+TEST(MaterialModels, EveryRegisteredModelHasOneKeyThatNamesItBack) {
+  const std::vector<std::string> strength = strength_keys(), damage = damage_keys();
+  for (std::size_t k = 0; k < strength.size(); ++k) {
+    const StrengthKind kind = strength_kind_of(strength[k]);
+    EXPECT_EQ(static_cast<std::size_t>(kind), k) << strength[k];
+    EXPECT_EQ(strength_key(kind), strength[k]);
+    EXPECT_EQ(std::count(strength.begin(), strength.end(), strength[k]), 1) << strength[k];
+  }
+  for (std::size_t k = 0; k < damage.size(); ++k) {
+    const DamageKind kind = damage_kind_of(damage[k]);
+    EXPECT_EQ(static_cast<std::size_t>(kind), k) << damage[k];
+    EXPECT_EQ(damage_key(kind), damage[k]);
+    EXPECT_EQ(std::count(damage.begin(), damage.end(), damage[k]), 1) << damage[k];
+  }
+  EXPECT_EQ(strength.size(), 5u);
+  EXPECT_EQ(damage.size(), 5u);
+  // What the dispatch reads of each model's traits.
+  MaterialParams<double> m;
+  m.strength.kind = StrengthKind::Hydrodynamic;
+  EXPECT_FALSE(has_deviatoric_stress(m));
+  m.strength.kind = StrengthKind::JohnsonHolmquist2;
+  EXPECT_TRUE(has_deviatoric_stress(m));
+  EXPECT_TRUE(strength_needs_pressure(m));
+  m.strength.kind = StrengthKind::JohnsonCook;
+  EXPECT_FALSE(strength_needs_pressure(m));
+  EXPECT_FALSE(can_fail(m));
+  m.damage.kind = DamageKind::FractureEnergy;
+  EXPECT_TRUE(can_fail(m));
 }
 
 }  // namespace
