@@ -224,6 +224,32 @@ TYPED_TEST(DamageTyped, GradientPairScalesWithDamageFactor) {
   EXPECT_NEAR(intact.grad_rho.y, vol * drho * gw.y, tol * std::abs(vol * drho * gw.y));
 }
 
+// L_damaged is summed apart only from the first pair whose weight differs from L's (pair_terms.hpp). A
+// row of intact pairs, then a half-damaged one, then intact ones again must give the same bits as summing
+// both matrices over every pair: here summed by hand with accumulate_correction.
+TYPED_TEST(DamageTyped, DamagedCorrectionSummedApartFromTheFirstScaledPair) {
+  using Real = TypeParam;
+  const Vec3<Real> vji{Real(1), Real(2), Real(3)};
+  GradientSums<Real> sums = GradientSums<Real>::zero();
+  Mat3<Real> L = Mat3<Real>::zero(), L_damaged = Mat3<Real>::zero();
+  const Real damage_j[] = {Real(0), Real(0), Real(0.5), Real(0), Real(0.25)};
+  for (int k = 0; k < 5; ++k) {
+    const Real vol = Real(1.0e-9) * Real(1 + k);
+    const Vec3<Real> gw{Real(3.0e5) - Real(1.0e4 * k), Real(-1.0e5), Real(2.0e5) + Real(3.0e3 * k)};
+    const Vec3<Real> xij{Real(-1.0e-3), Real(0.5e-3) + Real(1.0e-5 * k), Real(-0.25e-3)};
+    add_gradient_pair(sums, vol, gw, xij, vji, Real(0), Real(0), damage_j[k], false);
+    accumulate_correction(L, vol, gw, xij);
+    accumulate_correction(L_damaged, damaged_pair_factor(Real(0), damage_j[k]) * vol, gw, xij);
+    EXPECT_EQ(sums.apart, k >= 2) << "pair " << k;
+  }
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      EXPECT_EQ(sums.L.m[a][b], L.m[a][b]);
+      EXPECT_EQ(sums.damaged_L().m[a][b], L_damaged.m[a][b]);
+      EXPECT_NE(sums.damaged_L().m[a][b], sums.L.m[a][b]);
+    }
+}
+
 // The delta-SPH share takes the same factor: half for an intact-failed pair, none for a failed pair.
 TYPED_TEST(DamageTyped, DeltaSphPairScalesWithDamageFactor) {
   using Real = TypeParam;
