@@ -1,6 +1,8 @@
 // The [materials] of a case file: EOS, strength and damage tables, checked against docs/case-files.md and
 // read into MaterialSpec in SI units (common/case_reading.hpp). Each strength and damage model reads its own
 // constants (common/models/); what every model shares is read here.
+#include <stdexcept>
+
 #include "common/case_reading.hpp"
 
 namespace impactsph::case_reading {
@@ -77,6 +79,22 @@ void read_eos(const View& e, EosParams<double>& p, bool& needs_bulk_modulus) {
     p.a = e.number_or("a", 0.0);
     e.range("a", p.a, -5, 5, Dimension::Dimensionless);
   }
+}
+
+// The registered kind of a case key that choice() has checked against strength_keys() / damage_keys().
+StrengthKind strength_kind_of(const std::string& key) {
+#define IMPACTSPH_MODEL_MATCH(k, member, Model) \
+  if (key == Model::key) return StrengthKind::k;
+  IMPACTSPH_STRENGTH_MODELS(IMPACTSPH_MODEL_MATCH)
+#undef IMPACTSPH_MODEL_MATCH
+  throw std::logic_error("no strength model has the key \"" + key + "\"");
+}
+DamageKind damage_kind_of(const std::string& key) {
+#define IMPACTSPH_MODEL_MATCH(k, member, Model) \
+  if (key == Model::key) return DamageKind::k;
+  IMPACTSPH_DAMAGE_MODELS(IMPACTSPH_MODEL_MATCH)
+#undef IMPACTSPH_MODEL_MATCH
+  throw std::logic_error("no damage model has the key \"" + key + "\"");
 }
 
 // Returns the bulk modulus E/(3(1-2nu)) when the elastic constants were given as E and nu, else 0. The

@@ -85,22 +85,6 @@ inline const char* strength_key(StrengthKind kind) {
 inline const char* damage_key(DamageKind kind) {
   return with_damage_model(kind, [](auto model) { return decltype(model)::key; });
 }
-// The kind of a case key, which must be one of strength_keys() / damage_keys().
-inline StrengthKind strength_kind_of(const std::string& key) {
-#define IMPACTSPH_MODEL_MATCH(k, member, Model) \
-  if (key == Model::key) return StrengthKind::k;
-  IMPACTSPH_STRENGTH_MODELS(IMPACTSPH_MODEL_MATCH)
-#undef IMPACTSPH_MODEL_MATCH
-  return StrengthKind::Hydrodynamic;
-}
-inline DamageKind damage_kind_of(const std::string& key) {
-#define IMPACTSPH_MODEL_MATCH(k, member, Model) \
-  if (key == Model::key) return DamageKind::k;
-  IMPACTSPH_DAMAGE_MODELS(IMPACTSPH_MODEL_MATCH)
-#undef IMPACTSPH_MODEL_MATCH
-  return DamageKind::None;
-}
-
 // The constants of a strength model: those every model shares, then one member per registered model.
 template <class Real>
 struct StrengthParams {

@@ -9,9 +9,7 @@ struct NoDamage : DamageModelDefaults {
   static constexpr bool fails = false;
   static constexpr bool takes_crack_faces = false;
   static constexpr bool needs_ductile_strength = false;
-  template <class Real> struct Params {
-    template <class To> Params<To> to() const { return {}; }
-  };
+  template <class Real> using Params = NoParams<Real>;
 };
 
 }  // namespace impactsph

@@ -42,6 +42,11 @@ template <class Real> IMPACTSPH_HD void apply_failure(Sym3<Real>& S, Real& P, Re
   P = max_of(P, Real(0));
 }
 
+// The constants of a model that has none of its own (`template <class Real> using Params = NoParams<Real>;`).
+template <class Real> struct NoParams {
+  template <class To> NoParams<To> to() const { return {}; }
+};
+
 // A strength model. `Material` is MaterialParams<Real> (material.hpp), whose `strength` holds the
 // constants every model shares (shear modulus, reference strain rate, melt temperature, Taylor-Quinney
 // factor) and one Params member per model.

@@ -8,9 +8,7 @@ namespace impactsph {
 struct ElasticStrength : StrengthModelDefaults {
   static constexpr const char* key = "elastic";
   static constexpr bool plastic = false;
-  template <class Real> struct Params {
-    template <class To> Params<To> to() const { return {}; }
-  };
+  template <class Real> using Params = NoParams<Real>;
 };
 
 }  // namespace impactsph

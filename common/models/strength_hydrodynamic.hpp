@@ -8,9 +8,7 @@ struct HydrodynamicStrength : StrengthModelDefaults {
   static constexpr const char* key = "hydrodynamic";
   static constexpr bool deviatoric = false;
   static constexpr bool plastic = false;
-  template <class Real> struct Params {
-    template <class To> Params<To> to() const { return {}; }
-  };
+  template <class Real> using Params = NoParams<Real>;
 };
 
 }  // namespace impactsph
