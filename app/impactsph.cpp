@@ -102,6 +102,10 @@ void print_scene(const Scene& scene, double dt) {
                 b.lattice_spacing.x * 1e3, b.lattice_spacing.y * 1e3, b.lattice_spacing.z * 1e3, 100 * b.max_stretch);
     if (std::abs(b.mass_scale - 1) > 1e-9) std::printf(", masses scaled by %.6g", b.mass_scale);
     std::printf("\n");
+    if (b.coarse_particle_count > 0)
+      std::printf("%-16s %-10s %.6g x %.6g x %.6g mm cells in the coarse region: %zu of its %zu particles\n", "", "coarse",
+                  b.coarse_lattice_spacing.x * 1e3, b.coarse_lattice_spacing.y * 1e3, b.coarse_lattice_spacing.z * 1e3,
+                  b.coarse_particle_count, b.particle_count);
   }
   print_geometry_warnings(scene, stdout);
   for (const SymmetryPlaneSpec& p : s.symmetry)

@@ -252,7 +252,10 @@ BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx) {
   const std::string key = body_key(k);
   const std::string thin_hint = " at spacing " + format_quantity(dx, Dimension::Length) +
                                 ": a body needs at least two particles across; make it at least " +
-                                format_quantity(2 * dx, Dimension::Length) + " or refine numerics.spacing";
+                                format_quantity(2 * dx, Dimension::Length) +
+                                (b.coarse_ratio > 1 ? " or lower " + key + ".coarse.ratio (the body's lattice is built "
+                                                      "at ratio x numerics.spacing and split outside the region)"
+                                                    : std::string(" or refine numerics.spacing"));
   BodyLattice out;
   if (b.shape == Shape::Box) {
     AxisCells axes[3];
@@ -370,9 +373,51 @@ BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx) {
   return out;
 }
 
-// Two bodies overlap when a particle of one lies inside the other's shape, or when particles of the two
-// come closer than half a spacing (which catches lattices that interleave at a shared face). Only the
-// particles in the intersection of the two bodies' bounding boxes are looked at, hashed on a grid of
-// cells dx/2 wide, so the check costs about the size of the contact zone, not N^2.
+// A body at two resolutions (BodySpec::coarse_ratio > 1): its lattice at ratio x dx, then every cell whose
+// centre lies outside the coarse region split into ratio^3 cells of a ratio-th of its widths, in the
+// cell's place in the lattice order (children with x fastest). The split cells fill their parent exactly,
+// so the body keeps its volume, mass and sizes, and a symmetry plane halfway between two coarse layers
+// stays halfway between two fine ones. Throws when the region holds none of the body's cells or all of them.
+BodyLattice two_resolution_lattice(const CaseSpec& spec, std::size_t k, double dx) {
+  const BodySpec& b = spec.bodies[k];
+  const int r = b.coarse_ratio;
+  const double coarse_dx = r * dx;
+  const BodyLattice coarse = lattice(spec, k, coarse_dx);
+  BodyLattice out;
+  out.round_fitted = coarse.round_fitted;
+  std::size_t kept_coarse = 0;
+  for (std::size_t i = 0; i < coarse.pts.size(); ++i) {
+    const Vec3d& q = coarse.pts[i];
+    const Vec3d& c = coarse.cell[i];
+    if (in_fixed_region(b.coarse_region, q, 1e-9 * dx)) {
+      out.pts.push_back(q);
+      out.cell.push_back(c);
+      out.spacing.push_back(coarse_dx);
+      ++kept_coarse;
+      continue;
+    }
+    const Vec3d w = c * (1.0 / r);
+    for (int kz = 0; kz < r; ++kz)
+      for (int jy = 0; jy < r; ++jy)
+        for (int ix = 0; ix < r; ++ix) {
+          const Vec3d offset{(ix + 0.5) * w.x - 0.5 * c.x, (jy + 0.5) * w.y - 0.5 * c.y, (kz + 0.5) * w.z - 0.5 * c.z};
+          out.pts.push_back(q + offset);
+          out.cell.push_back(w);
+          out.spacing.push_back(dx);
+        }
+  }
+  const std::string key = body_key(k) + ".coarse";
+  if (kept_coarse == 0)
+    throw CaseError(spec.source_file, b.line, key,
+                    "the region holds none of the centres of " + body_name(spec, k) + "'s cells at its coarse spacing " +
+                        format_quantity(coarse_dx, Dimension::Length) +
+                        ": it lies outside the body; move or enlarge it, or remove [bodies.coarse]");
+  if (kept_coarse == coarse.pts.size())
+    throw CaseError(spec.source_file, b.line, key,
+                    "the region holds every cell of " + body_name(spec, k) +
+                        ", so no part of it is at numerics.spacing; shrink the region, or remove [bodies.coarse] and "
+                        "give the body's spacing as numerics.spacing");
+  return out;
+}
 
 }  // namespace impactsph::scene_detail

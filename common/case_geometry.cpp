@@ -95,6 +95,47 @@ void read_mesh(const View& b, BodySpec& body) {
   }
 }
 
+// A region (region = "box" with min and max, or "outside-cylinder" with axis, axis_point and radius), as
+// [[boundaries.fixed]] and [bodies.coarse] give it; `also` are the table's other keys.
+void read_region(const View& f, FixedRegionSpec& reg, const Keys& also) {
+  const std::string region = f.choice("region", {"box", "outside-cylinder"});
+  Keys valid{"region"};
+  valid.insert(valid.end(), also.begin(), also.end());
+  if (region == "box") {
+    valid.insert(valid.end(), {"min", "max"});
+    f.allow(valid);
+    reg.kind = FixedRegionSpec::Kind::Box;
+    read_box(f, reg.box_min, reg.box_max);
+  } else {
+    valid.insert(valid.end(), {"axis", "axis_point", "radius"});
+    f.allow(valid);
+    reg.kind = FixedRegionSpec::Kind::OutsideCylinder;
+    reg.axis = f.axis("axis");
+    reg.axis_point = f.vec3("axis_point", Dimension::Length);
+    reg.radius = f.quantity("radius", Dimension::Length);
+    f.positive("radius", reg.radius, Dimension::Length);
+  }
+}
+
+// [bodies.coarse]: where the body is at a coarser spacing, and how much coarser (BodySpec::coarse_ratio). A
+// variable smoothing length bounds h by factors of one initial h, which two resolutions do not have.
+void read_coarse(const View& b, BodySpec& body) {
+  const View c = b.sub("coarse", "the coarse region of a body",
+                       "{ ratio = 2, region = \"outside-cylinder\", axis = \"z\", axis_point = [\"0 mm\", \"0 mm\", "
+                       "\"0 mm\"], radius = \"30 mm\" }");
+  read_region(c, body.coarse_region, {"ratio"});
+  if (!c.has("ratio")) c.missing("ratio", "expected the region's spacing over numerics.spacing, 2, 3 or 4");
+  const double ratio = c.number("ratio");
+  if (!(ratio == 2 || ratio == 3 || ratio == 4))
+    c.fail("ratio", "must be 2, 3 or 4 (got " + format_quantity(ratio, Dimension::Dimensionless) +
+                        "): the region's spacing over numerics.spacing, a whole number so that each coarse cell "
+                        "splits into ratio^3 fine ones; above 4 the kernel sums across the interface lose accuracy");
+  body.coarse_ratio = static_cast<int>(ratio);
+  if (body.variable_h)
+    b.fail("variable_h", "a body with a [bodies.coarse] region has two initial smoothing lengths, and h_min and "
+                         "h_max are factors of one; remove variable_h or the coarse region");
+}
+
 void read_velocity(const View& b, BodySpec& body) {
   const toml::node* v = b.find("velocity");
   const toml::node* dir = b.find("direction");
@@ -125,7 +166,7 @@ BodySpec read_body(const View& b, const std::vector<MaterialSpec>& materials) {
   body.name = b.string("name", "\"projectile\"");
   check_name(r, b.find("name"), b.key("name"), body.name);
   const std::string shape = b.choice("shape", kShapes);
-  const Keys common{"name", "material", "shape", "velocity", "direction", "variable_h", "h_min", "h_max"};
+  const Keys common{"name", "material", "shape", "velocity", "direction", "variable_h", "h_min", "h_max", "coarse"};
   const bool is_box = shape == "box", is_sphere = shape == "sphere", is_mesh = shape == "mesh";
   const Keys& own = is_box ? kBoxKeys : (is_sphere ? kSphereKeys : (is_mesh ? kMeshKeys : kCylinderKeys));
   Keys valid = common;
@@ -190,6 +231,7 @@ BodySpec read_body(const View& b, const std::vector<MaterialSpec>& materials) {
   body.h_max_factor = b.number_or("h_max", 2.0);
   b.range("h_max", body.h_max_factor, 1, 10, Dimension::Dimensionless, false, false,
           "HMAX of X eq 10, a factor of the initial smoothing length");
+  if (b.has("coarse")) read_coarse(b, body);
   return body;
 }
 
@@ -242,19 +284,7 @@ void read_boundaries(const View& root, CaseSpec& spec) {
       const View f(r, *a->get(i)->as_table(), "boundaries.fixed[" + std::to_string(i) + "]", "a fixed region");
       FixedRegionSpec reg;
       reg.line = line_of(a->get(i));
-      const std::string region = f.choice("region", {"box", "outside-cylinder"});
-      if (region == "box") {
-        f.allow({"region", "body", "min", "max"});
-        reg.kind = FixedRegionSpec::Kind::Box;
-        read_box(f, reg.box_min, reg.box_max);
-      } else {
-        f.allow({"region", "body", "axis", "axis_point", "radius"});
-        reg.kind = FixedRegionSpec::Kind::OutsideCylinder;
-        reg.axis = f.axis("axis");
-        reg.axis_point = f.vec3("axis_point", Dimension::Length);
-        reg.radius = f.quantity("radius", Dimension::Length);
-        f.positive("radius", reg.radius, Dimension::Length);
-      }
+      read_region(f, reg, {"body"});
       if (f.has("body")) {
         reg.body = f.string("body", "\"plate\"");
         if (std::find(body_names.begin(), body_names.end(), reg.body) == body_names.end())

@@ -30,6 +30,17 @@ class MeshSolid;  // common/mesh_solid.hpp
 // r = sqrt(S^2 - x^2) - (S - R), nose_length = R sqrt(4 crh - 1).
 enum class Nose { Flat, Hemispherical, Conical, Ogival };
 
+// Particles inside the region are clamped (velocity held at zero).
+struct FixedRegionSpec {
+  enum class Kind { Box, OutsideCylinder } kind = Kind::Box;
+  std::string body;        // restrict to this body; empty: any body
+  Vec3d box_min{0, 0, 0}, box_max{0, 0, 0};  // Box
+  Vec3d axis_point{0, 0, 0};  // OutsideCylinder: a point on the axis
+  int axis = 2;               // OutsideCylinder: axis direction
+  double radius = 0;          // OutsideCylinder: particles farther than this from the axis are fixed
+  int line = 0;               // line of its [[boundaries.fixed]] header, for messages (0: unknown)
+};
+
 struct BodySpec {
   std::string name;
   std::string material;    // name of a MaterialSpec
@@ -52,18 +63,13 @@ struct BodySpec {
   // [h_min_factor, h_max_factor] x h0 (h0 = numerics.h_factor x spacing). Off by default.
   bool variable_h = false;
   double h_min_factor = 0.2, h_max_factor = 2.0;  // X: HMIN = 0.2, HMAX = 2.0 (LS-DYNA defaults)
+  // Two resolutions in one body ([bodies.coarse]): the body's lattice is built at coarse_ratio x spacing,
+  // and every cell whose centre lies outside coarse_region is split into coarse_ratio^3 cells, so the body
+  // is at about the case's spacing there and coarse_ratio times coarser inside the region (scene.cpp).
+  // coarse_ratio 1: one resolution. The region takes the kinds of [[boundaries.fixed]] (its body unused).
+  int coarse_ratio = 1;
+  FixedRegionSpec coarse_region;
   int line = 0;            // line of its [[bodies]] header in the case file, for messages (0: unknown)
-};
-
-// Particles inside the region are clamped (velocity held at zero).
-struct FixedRegionSpec {
-  enum class Kind { Box, OutsideCylinder } kind = Kind::Box;
-  std::string body;        // restrict to this body; empty: any body
-  Vec3d box_min{0, 0, 0}, box_max{0, 0, 0};  // Box
-  Vec3d axis_point{0, 0, 0};  // OutsideCylinder: a point on the axis
-  int axis = 2;               // OutsideCylinder: axis direction
-  double radius = 0;          // OutsideCylinder: particles farther than this from the axis are fixed
-  int line = 0;               // line of its [[boundaries.fixed]] header, for messages (0: unknown)
 };
 
 // Mirror plane x_axis = position; the model lies on one side of it (build_scene decides which from the

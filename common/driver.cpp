@@ -114,6 +114,10 @@ void write_summary(const Scene& scene, const Stepper& stepper, const RunOptions&
       generated[size.name + "_m"] = size.generated;
     }
     generated["lattice_spacing_m"] = vec_json(info.lattice_spacing);
+    if (info.coarse_particle_count > 0) {
+      generated["coarse_particles"] = info.coarse_particle_count;
+      generated["coarse_lattice_spacing_m"] = vec_json(info.coarse_lattice_spacing);
+    }
     generated["max_stretch"] = info.max_stretch;
     generated["mass_scale"] = info.mass_scale;
     bodies.push_back({{"name", info.name},

@@ -25,7 +25,9 @@
 // (sum_j m_j/rho_j W_ij = 1 inside a body) stay those of the lattice. Only where no round-lattice spacing
 // within 10 % fits (a body a few spacings across) is dx kept and the masses scaled to rho0 V, with a
 // warning. Every particle centre lies inside its shape; density rho0, zero energy, stress and damage,
-// and h = h_factor dx.
+// and h = h_factor dx. A body with a coarse region ([bodies.coarse], two_resolution_lattice) is the same
+// lattice at ratio x dx with the cells outside the region split into ratio^3; its particles' h follows
+// their own spacing, and its coarse part takes a copy of the material (Scene::materials).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -74,15 +76,19 @@ void describe_geometry(const CaseSpec& spec, std::size_t k, const BodyLattice& l
   info.generated_mass = copies * model_mass;
   info.mass_scale = scale;
 
-  Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300}, width{0, 0, 0};
+  Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300}, width{0, 0, 0}, coarse_width{0, 0, 0};
   double stretch = 0;
-  for (std::size_t i = 0; i < lat.pts.size(); ++i)
+  std::size_t coarse = 0;
+  for (std::size_t i = 0; i < lat.pts.size(); ++i) {
+    const bool is_coarse = lat.spacing[i] > dx;
+    coarse += is_coarse ? 1 : 0;
     for (int a = 0; a < 3; ++a) {
       lo[a] = std::min(lo[a], lat.pts[i][a] - 0.5 * lat.cell[i][a]);
       hi[a] = std::max(hi[a], lat.pts[i][a] + 0.5 * lat.cell[i][a]);
-      width[a] += lat.cell[i][a];
-      stretch = std::max(stretch, std::abs(lat.cell[i][a] / dx - 1));
+      (is_coarse ? coarse_width : width)[a] += lat.cell[i][a];
+      stretch = std::max(stretch, std::abs(lat.cell[i][a] / lat.spacing[i] - 1));
     }
+  }
   const Box3 shape = shape_bounds(b);
   for (std::size_t s = 0; s < spec.symmetry.size(); ++s) {
     const int a = spec.symmetry[s].axis;
@@ -92,7 +98,9 @@ void describe_geometry(const CaseSpec& spec, std::size_t k, const BodyLattice& l
     else hi[a] = 2 * plane - lo[a];
   }
   const Vec3d extent = hi - lo;
-  info.lattice_spacing = width * (1.0 / double(lat.pts.size()));
+  info.lattice_spacing = width * (1.0 / double(lat.pts.size() - coarse));
+  info.coarse_particle_count = coarse;
+  if (coarse > 0) info.coarse_lattice_spacing = coarse_width * (1.0 / double(coarse));
   info.max_stretch = stretch;
 
   const double cells = copies * model_cells;  // m^3, the whole body's lattice cells
@@ -109,9 +117,23 @@ void describe_geometry(const CaseSpec& spec, std::size_t k, const BodyLattice& l
       info.outer_centre_radius = std::max(info.outer_centre_radius, std::hypot(q[u] - b.base[u], q[v] - b.base[v]));
     info.sizes.push_back({"length", b.length, extent[b.axis]});
     // The diameter of the circle whose area is the lattice's widest layer (a layer of the shank), the
-    // model's layer mirrored by the symmetry planes along the cross-section axes.
+    // model's layer mirrored by the symmetry planes along the cross-section axes. A layer's area is that of
+    // every cell it passes through (the fine and the coarse cells of a two-resolution body).
     std::map<double, double> layer_area;  // m^2, by the layer's centre on the axis
-    for (std::size_t i = 0; i < lat.pts.size(); ++i) layer_area[lat.pts[i][b.axis]] += lat.cell[i][u] * lat.cell[i][v];
+    if (coarse == 0) {
+      for (std::size_t i = 0; i < lat.pts.size(); ++i) layer_area[lat.pts[i][b.axis]] += lat.cell[i][u] * lat.cell[i][v];
+    } else {
+      for (std::size_t i = 0; i < lat.pts.size(); ++i) layer_area[lat.pts[i][b.axis]] = 0;
+      for (auto& [centre, area] : layer_area)
+        for (std::size_t i = 0; i < lat.pts.size(); ++i)
+          {
+            // The cell spans [lo, hi) along the axis, its faces moved by rounding's worth so that a layer on a
+            // face counts the cell on one side only.
+            const double w = lat.cell[i][b.axis], eps = 1e-9 * w;
+            const double lo = lat.pts[i][b.axis] - 0.5 * w - eps, hi = lat.pts[i][b.axis] + 0.5 * w - eps;
+            if (centre >= lo && centre < hi) area += lat.cell[i][u] * lat.cell[i][v];
+          }
+    }
     double widest = 0;
     for (const auto& [centre, area] : layer_area) widest = std::max(widest, area);
     double section_copies = 1;
@@ -203,7 +225,12 @@ Scene build_scene(const CaseSpec& spec) {
     const MaterialSpec& m = spec.materials[b.material_index];
     if (!(m.params.eos.rho0 > 0))
       throw CaseError(spec.source_file, m.line, "materials." + m.name + ".density", "must be greater than zero");
-    lattices[k] = lattice(spec, k, dx);
+    if (b.coarse_ratio > 1) {
+      lattices[k] = two_resolution_lattice(scene.spec, k, dx);
+    } else {
+      lattices[k] = lattice(scene.spec, k, dx);
+      lattices[k].spacing.assign(lattices[k].pts.size(), dx);
+    }
     if (lattices[k].pts.empty())
       throw CaseError(spec.source_file, b.line, body_key(k), body_name(spec, k) + " holds no particle at this spacing");
     // The whole lattice's cells against the shape: 1 up to rounding where the lattice fits; otherwise the
@@ -217,11 +244,19 @@ Scene build_scene(const CaseSpec& spec) {
   ParticleSet& ps = scene.particles;
   std::vector<std::size_t> first{0};  // particles of body k are [first[k], first[k+1])
   std::vector<Box3> bounds;            // bounding boxes of the bodies' particles
-  const double h = spec.numerics.h_factor * dx;
   for (std::size_t k = 0; k < spec.bodies.size(); ++k) {
     const BodySpec& b = scene.spec.bodies[k];
     const MaterialParams<double>& mat = spec.materials[b.material_index].params;
     const BodyLattice& lat = lattices[k];
+    // The coarse part of a two-resolution body takes a copy of its material whose constants follow its
+    // smoothing length (the fracture energy's critical work, common/models/damage_fracture_energy.hpp).
+    int coarse_material = b.material_index;
+    if (b.coarse_ratio > 1) {
+      MaterialParams<double> params = mat;
+      set_damage_smoothing_length(params.damage, spec.numerics.h_factor * b.coarse_ratio * dx);
+      coarse_material = static_cast<int>(scene.materials.size());
+      scene.materials.push_back(params);
+    }
     const std::size_t n0 = ps.size();
     ps.resize(n0 + lat.pts.size());
     Box3 box{lat.pts[0], lat.pts[0]};
@@ -236,7 +271,7 @@ Scene build_scene(const CaseSpec& spec) {
       ps.rho[p] = mat.eos.rho0;
       ps.energy[p] = 0;
       ps.pressure[p] = 0;  // every EOS gives P = 0 at rho = rho0, e = 0
-      ps.h[p] = h;
+      ps.h[p] = spec.numerics.h_factor * lat.spacing[i];
       ps.dev_stress[p] = Sym3d::zero();
       ps.plastic_strain[p] = 0;
       ps.plastic_work[p] = 0;
@@ -244,7 +279,7 @@ Scene build_scene(const CaseSpec& spec) {
       ps.temperature[p] = mat.room_temperature;
       ps.bulking_pressure[p] = 0;
       ps.body[p] = static_cast<std::int32_t>(k);
-      ps.material[p] = b.material_index;
+      ps.material[p] = lat.spacing[i] > dx ? coarse_material : b.material_index;
       ps.fixed[p] = 0;
       model_mass += ps.mass[p];
       model_cells += c.x * c.y * c.z;

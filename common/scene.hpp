@@ -24,7 +24,10 @@ struct BodyInfo {
   double specified_mass = 0;       // kg, rho0 V of the shape
   double generated_mass = 0;       // kg
   std::vector<BodySize> sizes;     // box: x, y, z; cylinder: length, diameter; sphere: diameter
-  Vec3d lattice_spacing{0, 0, 0};  // m, mean width of the lattice cells along x, y, z
+  Vec3d lattice_spacing{0, 0, 0};  // m, mean width of the lattice cells along x, y, z (of the fine ones)
+  // A body at two resolutions (BodySpec::coarse_ratio): its particles in the coarse region and their cells.
+  std::size_t coarse_particle_count = 0;
+  Vec3d coarse_lattice_spacing{0, 0, 0};  // m, mean width of the coarse cells along x, y, z
   double max_stretch = 0;          // largest |cell width / spacing - 1| over the axes (the lattice's stretch)
   double outer_centre_radius = 0;  // m, cylinder: largest distance of a particle centre from its axis, as built
   double mass_scale = 1;           // particle mass over rho0 x cell volume: 1 where the lattice fits the shape
@@ -35,7 +38,9 @@ struct Scene {
   CaseSpec spec;
   ParticleSet particles;
   std::vector<BodyInfo> bodies;
-  std::vector<MaterialParams<double>> materials;  // indexed like spec.materials
+  // Indexed like spec.materials, then one copy for the coarse part of each two-resolution body (its
+  // constants that follow the smoothing length set for the coarse one; BodySpec::coarse_ratio).
+  std::vector<MaterialParams<double>> materials;
 };
 
 // Builds the particles of each body on a lattice fitted to its shape at about spec.numerics.spacing (see

@@ -17,6 +17,10 @@
 
 namespace impactsph::scene_detail {
 
+// Two bodies overlap when a particle of one lies inside the other's shape, or when particles of the two
+// come closer than half a spacing (which catches lattices that interleave at a shared face). Only the
+// particles in the intersection of the two bodies' bounding boxes are looked at, hashed on a grid of
+// cells dx/2 wide, so the check costs about the size of the contact zone, not N^2.
 void check_overlaps(const CaseSpec& spec, const ParticleSet& ps, const std::vector<std::size_t>& first,
                     const std::vector<Box3>& bounds, double dx) {
   const std::size_t nb = spec.bodies.size();
@@ -84,8 +88,8 @@ void check_overlaps(const CaseSpec& spec, const ParticleSet& ps, const std::vect
 // order; a body wholly on the other side is an error); when every body reaches across the plane, it is
 // the side holding more of their particles, the positive side on a tie. Then every body keeps only its
 // particles on the model side of every plane, in lattice order, so a cylinder whose axis lies in two
-// planes becomes an exact quarter. A kept particle closer than dx/4 to a plane (one on the plane
-// included) would lie closer than dx/2 to its own mirror image, the overlap rule between bodies.
+// planes becomes an exact quarter. A kept particle closer than a quarter of its spacing to a plane (one on
+// the plane included) would lie closer than half of it to its own mirror image, the overlap rule between bodies.
 // Returns the model side of each plane (+1: axis > position, -1: below), indexed like spec.symmetry.
 std::vector<int> clip_to_symmetry(const CaseSpec& spec, std::vector<BodyLattice>& lattices, double dx) {
   const double eps = 1e-9 * dx;
@@ -140,7 +144,6 @@ std::vector<int> clip_to_symmetry(const CaseSpec& spec, std::vector<BodyLattice>
              (side[s] > 0 ? " > " : " < ") + format_quantity(spec.symmetry[s].position, Dimension::Length);
     return out;
   };
-  const double min_d = 0.25 * dx;
   for (std::size_t k = 0; k < nb; ++k) {
     const BodyLattice& all = lattices[k];
     BodyLattice kept;
@@ -156,6 +159,7 @@ std::vector<int> clip_to_symmetry(const CaseSpec& spec, std::vector<BodyLattice>
         if (d < closest_d) closest_d = d, closest = s;
       }
       if (!keep) continue;
+      const double min_d = 0.25 * all.spacing[i];
       if (closest_d < min_d - eps)
         throw CaseError(spec.source_file, spec.bodies[k].line, body_key(k),
                         "the particle of " + body_name(spec, k) + " at " + point(p) + " is " +
@@ -166,6 +170,7 @@ std::vector<int> clip_to_symmetry(const CaseSpec& spec, std::vector<BodyLattice>
                             "body's lattice (for a cylinder cut by the plane: its axis in the plane; for a sphere: its centre)");
       kept.pts.push_back(p);
       kept.cell.push_back(all.cell[i]);
+      kept.spacing.push_back(all.spacing[i]);
     }
     if (kept.pts.empty() && !all.pts.empty())
       throw CaseError(spec.source_file, spec.bodies[k].line, body_key(k),

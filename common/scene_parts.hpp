@@ -40,6 +40,7 @@ struct AxisCells {
 struct BodyLattice {
   std::vector<Vec3d> pts;
   std::vector<Vec3d> cell;  // m, widths of each particle's lattice cell along x, y, z
+  std::vector<double> spacing;  // m, each particle's nominal spacing: dx, or ratio dx in a coarse region
   bool round_fitted = true; // false: no round-lattice spacing within 10 % of dx fits; dx kept
 };
 
@@ -64,6 +65,7 @@ long long round_count(double radius, double s, int dim);
 double fit_round_spacing(double radius, double dx, int dim);
 BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const std::string& thin_hint);
 BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx);
+BodyLattice two_resolution_lattice(const CaseSpec& spec, std::size_t k, double dx);
 
 // scene_checks.cpp
 void check_overlaps(const CaseSpec& spec, const ParticleSet& ps, const std::vector<std::size_t>& first,

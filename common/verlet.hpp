@@ -7,10 +7,18 @@ namespace impactsph {
 
 // Reach of the neighbour search without its skin: the kernel support at the largest h, the largest fixed
 // penalty contact distance, or SRAD times the largest h (X eqs 18, 20), whichever is largest.
-inline double search_reach(double support_at_h_max, double contact_distance, double srad, double h_max) {
+IMPACTSPH_HD double search_reach(double support_at_h_max, double contact_distance, double srad, double h_max) {
   const double c = contact_distance > srad * h_max ? contact_distance : srad * h_max;
   return support_at_h_max > c ? support_at_h_max : c;
 }
+
+// Two resolutions in one scene (a body's coarse region, BodySpec::coarse_ratio) give the particles two
+// fixed smoothing lengths; a list built with the largest reach for every row would hold ratio^3 times the
+// pairs a fine particle needs. The list then holds a pair when it lies within the reach of the larger h of
+// the two plus the skin: every pair within the support at (h_i + h_j) / 2, the contact distance or
+// srad (h_i + h_j) / 2 is held. With one h, or a variable h (whose lists follow the largest h), every row
+// keeps the one radius.
+inline bool reach_per_pair(double h_min, double h_max, bool variable_h) { return h_min < h_max && !variable_h; }
 
 // The skin a list is built with, as a share of the reach: a larger skin keeps a list over more steps but
 // gives every row more candidates to test.

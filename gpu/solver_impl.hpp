@@ -195,6 +195,10 @@ class Solver final : public GpuStepper {
   double max_smoothing_length() {
     return static_cast<double>(thrust::reduce(d_.h.begin(), d_.h.begin() + n_, Real(0), MaxOf{}));
   }
+  double min_smoothing_length() {
+    return static_cast<double>(
+        thrust::reduce(d_.h.begin(), d_.h.begin() + n_, std::numeric_limits<Real>::max(), MinOf{}));
+  }
 
   double max_speed() {
     const StateView<Real> y = state_view(d_);
@@ -394,6 +398,7 @@ class Solver final : public GpuStepper {
   DVec<std::int32_t> perm_, order_, slot_of_, cell_start_, list_;
   DVec<std::int64_t> list_offset_;
   DVec<Vec3p> sorted_points_;
+  DVec<double> slot_radius_;  // search radius of each sorted point when reach_per_pair (common/verlet.hpp), m
   Grid grid_{};
   // Work arrays over sorted slots.
   DVec<Vec3p> wx_;

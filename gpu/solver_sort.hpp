@@ -124,12 +124,31 @@ void Solver<Real>::sort_particles() {
   std::int64_t* off = raw(list_offset_);
   const double r2 = radius_ * radius_;
   const CellRange cr{sp, start, g};
+  // Two resolutions: a pair is held within the larger of its two points' radii (reach_per_pair).
+  const bool per_pair = reach_per_pair(min_smoothing_length(), max_smoothing_length(), variable_h_);
+  slot_radius_.resize(per_pair ? static_cast<std::size_t>(total) : 0);
+  const double* sr = raw(slot_radius_);
+  if (per_pair) {
+    double* radius = raw(slot_radius_);
+    const Real* h = raw(d_.h);
+    const double contact = contact_reach_, srad = contact_srad_, skin = skin_;
+    launch<kFlush>("slot_radius", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+      const std::int64_t pnt = order[s];
+      const double hp = static_cast<double>(h[pnt < n ? pnt : src[pnt - n]]);
+      radius[s] = impactsph::search_reach(static_cast<double>(kernel_support(hp)), contact, srad, hp) + skin;
+    });
+  }
+  auto held = [=] IMPACTSPH_LAMBDA(std::int64_t s, std::int32_t j, Vec3p xs) {
+    if (!per_pair) return norm2(xs - sp[j]) < r2;
+    const double r = sr[s] > sr[j] ? sr[s] : sr[j];
+    return static_cast<double>(norm2(xs - sp[j])) < r * r;
+  };
   launch<kFlush>("list_count", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
     const std::int64_t s = slot[i];
     const Vec3p xs = sp[s];
     std::int64_t c = 0;
     cr.for_each_candidate(s, [&](std::int32_t j) {
-      if (norm2(xs - sp[j]) < r2) ++c;
+      if (held(s, j, xs)) ++c;
     });
     off[i] = c;
   });
@@ -142,7 +161,7 @@ void Solver<Real>::sort_particles() {
     const std::int64_t first = off[i];
     std::int64_t k = first;
     cr.for_each_candidate(s, [&](std::int32_t j) {
-      if (norm2(xs - sp[j]) < r2) list[k++] = j;
+      if (held(s, j, xs)) list[k++] = j;
     });
     for (std::int64_t a = first + 1; a < k; ++a) {  // insertion sort by identity: rows are short
       const std::int32_t j = list[a];

@@ -9,7 +9,8 @@
 
 namespace impactsph::reference {
 
-void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_count, double radius, NeighbourList& out) {
+void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_count, double radius, NeighbourList& out,
+                          const std::vector<double>* point_radius) {
   const std::size_t n = points.size();
   out.offsets.assign(query_count + 1, 0);
   out.indices.clear();
@@ -64,7 +65,13 @@ void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_co
         for (std::int64_t k = first; k < last; ++k) {
           const std::int32_t j = sorted[static_cast<std::size_t>(k)];
           if (static_cast<std::size_t>(j) == i) continue;
-          if (norm2(xi - points[static_cast<std::size_t>(j)]) < r2max) emit(j);
+          const double d2 = norm2(xi - points[static_cast<std::size_t>(j)]);
+          if (!point_radius) {
+            if (d2 < r2max) emit(j);
+          } else {
+            const double r = std::max((*point_radius)[i], (*point_radius)[static_cast<std::size_t>(j)]);
+            if (d2 < r * r) emit(j);
+          }
         }
       }
   };

@@ -21,7 +21,9 @@ struct NeighbourList {
 };
 
 // Neighbours within `radius` of each of the first `query_count` points, searched among all points
-// (queries first, then e.g. mirror ghosts).
-void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_count, double radius, NeighbourList& out);
+// (queries first, then e.g. mirror ghosts). With `point_radius` (one per point, none above `radius`), a pair
+// is held when it lies within the larger of its two points' radii (reach_per_pair, common/verlet.hpp).
+void build_neighbour_list(const std::vector<Vec3d>& points, std::size_t query_count, double radius, NeighbourList& out,
+                          const std::vector<double>* point_radius = nullptr);
 
 }  // namespace impactsph::reference

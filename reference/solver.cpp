@@ -14,6 +14,7 @@ ReferenceSolver::ReferenceSolver(const Scene& scene)
       contacts_(make_pair_contacts<double>(scene)), smoothing_(make_body_smoothing<double>(scene)),
       contact_reach_(contact_reach(scene)), materials_(scene.materials) {
   for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
+  for (const BodySpec& b : scene.spec.bodies) variable_h_ = variable_h_ || b.variable_h;
 }
 
 double ReferenceSolver::stable_time_step(const ParticleSet& p) {
@@ -177,6 +178,7 @@ void ReferenceSolver::load_constants(const ParticleSet& p) {
   damage_ = p.damage; plastic_strain_ = p.plastic_strain; temperature_ = p.temperature;
   bulking_ = p.bulking_pressure;
   h_max_ = p.size() ? *std::max_element(h_.begin(), h_.end()) : 0.0;
+  h_min_ = p.size() ? *std::min_element(h_.begin(), h_.end()) : 0.0;
 }
 
 double ReferenceSolver::search_reach() const {
@@ -193,7 +195,18 @@ void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double ski
   std::vector<Vec3d> points(pos);
   points.reserve(pos.size() + ghosts_.size());
   for (const Ghost& g : ghosts_) points.push_back(hadamard(g.sign, pos[static_cast<std::size_t>(g.source)]) + g.shift);
-  build_neighbour_list(points, pos.size(), reach + skin, neighbours_);
+  const std::vector<double>* point_radius = nullptr;
+  if (reach_per_pair(h_min_, h_max_, variable_h_)) {
+    point_radius_.resize(points.size());
+    auto radius_of = [&](double h) {
+      return impactsph::search_reach(kernel_support(h), contact_reach_.distance, contact_reach_.srad, h) + skin;
+    };
+    for (std::size_t i = 0; i < pos.size(); ++i) point_radius_[i] = radius_of(h_[i]);
+    for (std::size_t g = 0; g < ghosts_.size(); ++g)
+      point_radius_[pos.size() + g] = radius_of(h_[static_cast<std::size_t>(ghosts_[g].source)]);
+    point_radius = &point_radius_;
+  }
+  build_neighbour_list(points, pos.size(), reach + skin, neighbours_, point_radius);
   parallel_for(static_cast<std::int64_t>(pos.size()), [&](std::int64_t i) {
     std::sort(neighbours_.indices.begin() + neighbours_.offsets[i], neighbours_.indices.begin() + neighbours_.offsets[i + 1]);
   });

@@ -86,7 +86,9 @@ class ReferenceSolver final : public Stepper {
   std::vector<std::uint8_t> fixed_;
   std::vector<std::int32_t> body_;
   std::vector<std::string> body_names_;
-  double h_max_ = 0;
+  double h_max_ = 0, h_min_ = 0;  // m, the largest and smallest smoothing length now
+  bool variable_h_ = false;      // some body has a variable smoothing length
+  std::vector<double> point_radius_;  // search radius of each point (reals, then ghosts) when reach_per_pair
 
   std::vector<Ghost> ghosts_;
   // Walls: per point the walls it let go of (ghosts 0) and the walls of its image (reals 0); bit k for

@@ -271,7 +271,7 @@ TEST(CaseFileErrors, SphereKeys) {
   expect_error(t, "bodies[1].center[1]", "is a pressure; expected a length", line_of(t, "center = "));
 
   // Keys of the other shapes, named as such, with the sphere's valid keys.
-  const std::string valid = "valid keys: name, material, shape, velocity, direction, variable_h, h_min, h_max, center, radius";
+  const std::string valid = "valid keys: name, material, shape, velocity, direction, variable_h, h_min, h_max, coarse, center, radius";
   for (const std::string& extra : {"axis = \"z\"", "length = \"5 mm\"", "base = [\"5 mm\", \"5 mm\", \"2 mm\"]"}) {
     SCOPED_TRACE(extra);
     t = with("radius = \"2 mm\"\n", "radius = \"2 mm\"\n" + extra + "\n", kSphere);

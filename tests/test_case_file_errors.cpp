@@ -42,7 +42,7 @@ TEST(CaseFileErrors, UnknownKeyListsValidKeysAndSuggests) {
 
   // A key of another shape is unknown for this one.
   t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]", "max = [\"10 mm\", \"10 mm\", \"2 mm\"]\nradius = \"1 mm\"");
-  expect_error(t, "bodies[0].radius", "valid keys: name, material, shape, velocity, direction, variable_h, h_min, h_max, min, max",
+  expect_error(t, "bodies[0].radius", "valid keys: name, material, shape, velocity, direction, variable_h, h_min, h_max, coarse, min, max",
                line_of(t, "radius = \"1 mm\""));
 
   t = with("s = 1.489", "s1 = 1.489");
