@@ -124,15 +124,14 @@ void describe_geometry(const CaseSpec& spec, std::size_t k, const BodyLattice& l
       for (std::size_t i = 0; i < lat.pts.size(); ++i) layer_area[lat.pts[i][b.axis]] += lat.cell[i][u] * lat.cell[i][v];
     } else {
       for (std::size_t i = 0; i < lat.pts.size(); ++i) layer_area[lat.pts[i][b.axis]] = 0;
+      // A cell spans [lo, hi) along the axis, its faces moved by rounding's worth so that a layer on a face
+      // counts the cell on one side only.
       for (auto& [centre, area] : layer_area)
-        for (std::size_t i = 0; i < lat.pts.size(); ++i)
-          {
-            // The cell spans [lo, hi) along the axis, its faces moved by rounding's worth so that a layer on a
-            // face counts the cell on one side only.
-            const double w = lat.cell[i][b.axis], eps = 1e-9 * w;
-            const double lo = lat.pts[i][b.axis] - 0.5 * w - eps, hi = lat.pts[i][b.axis] + 0.5 * w - eps;
-            if (centre >= lo && centre < hi) area += lat.cell[i][u] * lat.cell[i][v];
-          }
+        for (std::size_t i = 0; i < lat.pts.size(); ++i) {
+          const double w = lat.cell[i][b.axis], eps = 1e-9 * w;
+          const double lo = lat.pts[i][b.axis] - 0.5 * w - eps, hi = lat.pts[i][b.axis] + 0.5 * w - eps;
+          if (centre >= lo && centre < hi) area += lat.cell[i][u] * lat.cell[i][v];
+        }
     }
     double widest = 0;
     for (const auto& [centre, area] : layer_area) widest = std::max(widest, area);

@@ -89,6 +89,35 @@ TEST(TwoResolutions, CoarseCellsKeptInTheRegionAndSplitOutsideIt) {
   EXPECT_EQ(one.materials.size(), 1u);
 }
 
+// A quarter disc (the plate case's layout) with its rim coarse: the body as specified, whole, and each
+// layer's area counted once across the fine and coarse layers.
+TEST(TwoResolutions, QuarterDiscWithACoarseRimKeepsItsMassAndSizes) {
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  s.bodies.push_back(cylinder("plate", {0, 0, -8 * dx}, 2, 30 * dx, 8 * dx));
+  s.bodies[0].coarse_ratio = 2;
+  s.bodies[0].coarse_region.kind = FixedRegionSpec::Kind::OutsideCylinder;
+  s.bodies[0].coarse_region.axis = 2;
+  s.bodies[0].coarse_region.radius = 15 * dx;
+  for (int a = 0; a < 2; ++a) {
+    SymmetryPlaneSpec plane;
+    plane.axis = a;
+    s.symmetry.push_back(plane);
+  }
+  const Scene scene = build_scene(s);
+  const BodyInfo& b = scene.bodies[0];
+  EXPECT_GT(b.coarse_particle_count, 0u);
+  EXPECT_LT(b.coarse_particle_count, b.particle_count);
+  EXPECT_NEAR(b.generated_mass / b.specified_mass, 1.0, 1e-12);
+  for (const BodySize& size : b.sizes) EXPECT_NEAR(size.generated / size.specified, 1.0, 1e-6) << size.name;
+  EXPECT_TRUE(b.warnings.empty()) << b.warnings.front();
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const Vec3d& x = scene.particles.pos[i];
+    EXPECT_GT(x.x, 0);
+    EXPECT_GT(x.y, 0);
+  }
+}
+
 TEST(TwoResolutions, TheCoarsePartsFractureEnergyFollowsItsSmoothingLength) {
   const double dx = 1e-3;
   CaseSpec s = bar_with_coarse_half(dx, 3);
