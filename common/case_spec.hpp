@@ -66,7 +66,8 @@ struct BodySpec {
   // Two resolutions in one body ([bodies.coarse]): the body's lattice is built at coarse_ratio x spacing,
   // and every cell whose centre lies outside coarse_region is split into coarse_ratio^3 cells, so the body
   // is at about the case's spacing there and coarse_ratio times coarser inside the region (scene.cpp).
-  // coarse_ratio 1: one resolution. The region takes the kinds of [[boundaries.fixed]] (its body unused).
+  // coarse_ratio 1: one resolution; the case reader accepts 2 (the verified ratio); the scene builder takes
+  // any whole number. The region takes the kinds of [[boundaries.fixed]] (its body unused).
   int coarse_ratio = 1;
   FixedRegionSpec coarse_region;
   int line = 0;            // line of its [[bodies]] header in the case file, for messages (0: unknown)

@@ -8,6 +8,8 @@
 //   - the pulse's speed in the coarse part within 0.5 % of c_L (its half-amplitude front, fitted over
 //     85-112 mm, well past the interface at 70 mm);
 //   - energy drift below 0.5 %.
+// The same case with a 3 mm section at 3:1 and a 4 mm section at 4:1 (measured 2026-12-05): 2.1 % reflected,
+// -0.36 % speed; 5.2 %, -0.60 %. The case reader therefore takes 2:1 only (common/case_geometry.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,10 +40,11 @@ struct InterfaceRun {
   double energy_drift = 0;
 };
 
-InterfaceRun run(const CaseSpec& spec) {
+// `slab`: the width of the slabs the fronts are taken in, the coarse spacing (every slab holds particles).
+InterfaceRun run(const CaseSpec& spec, double slab) {
   Scene scene = build_scene(spec);
   reference::ReferenceSolver solver(scene);
-  const double dx = spec.numerics.spacing, coarse = 2 * dx;
+  const double dx = spec.numerics.spacing;
   auto vx = [&](std::size_t i) { return scene.particles.vel[i].x; };
   const Totals t0 = summarise_totals(scene.particles);
   InterfaceRun r;
@@ -52,7 +55,7 @@ InterfaceRun run(const CaseSpec& spec) {
     next += 0.25e-6;
     r.times.push_back(t);
     r.fronts.push_back(leading_crossing(
-        slab_profile(scene.particles, 0, 0.0, coarse, static_cast<int>(std::lround(kBarEnd / coarse)), vx), 0.5 * X::v));
+        slab_profile(scene.particles, 0, 0.0, slab, static_cast<int>(std::lround(kBarEnd / slab)), vx), 0.5 * X::v));
   });
   r.fine = slab_profile(scene.particles, 0, 0.0, dx, static_cast<int>(std::lround(kBarEnd / dx)), vx);
   const Totals t1 = summarise_totals(scene.particles);
@@ -72,7 +75,8 @@ TEST(ResolutionInterface, ReflectsBelowOnePercentAndPassesThePulseAtTheWaveSpeed
   ASSERT_EQ(two.bodies[1].coarse_ratio, 2);
   CaseSpec one = two;
   one.bodies[1].coarse_ratio = 1;
-  const InterfaceRun a = run(two), b = run(one);
+  const double slab = two.bodies[1].coarse_ratio * two.numerics.spacing;
+  const InterfaceRun a = run(two, slab), b = run(one, slab);
 
   double reflected = 0, at = 0, wake = 0;
   for (std::size_t k = 0; k < a.fine.x.size(); ++k) {
@@ -82,11 +86,11 @@ TEST(ResolutionInterface, ReflectsBelowOnePercentAndPassesThePulseAtTheWaveSpeed
     wake = std::max(wake, std::abs(b.fine.value[k]));
   }
   const double speed_two = front_speed(a), speed_one = front_speed(b);
-  std::printf("resolution interface 0.5 mm | 1 mm at x = %.0f mm: %zu particles (%zu at one resolution), %ld steps; "
+  std::printf("resolution interface %g mm | %g mm at x = %.0f mm: %zu particles (%zu at one resolution), %ld steps; "
               "reflected %.4f m/s at x = %.1f mm = %.3f %% of the incident %.0f m/s (the one-resolution run's own wake "
               "there: %.3f %%); pulse speed in the coarse part %.1f m/s (%+.3f %% against c_L %.1f; one resolution "
               "%+.3f %%); energy drift %.3g\n",
-              kInterface * 1e3, a.particles, b.particles, a.steps, reflected, at * 1e3, 100 * reflected / X::v, X::v,
+              two.numerics.spacing * 1e3, slab * 1e3, kInterface * 1e3, a.particles, b.particles, a.steps, reflected, at * 1e3, 100 * reflected / X::v, X::v,
               100 * wake / X::v, speed_two, 100 * (speed_two / X::c_l() - 1), X::c_l(), 100 * (speed_one / X::c_l() - 1),
               a.energy_drift);
   EXPECT_LT(reflected / X::v, 0.01) << "the interface reflects " << reflected << " m/s at x = " << at;
