@@ -34,8 +34,10 @@ struct DisjointSets {
   }
 };
 
-// Connects the listed particles closer than `link` with a hash grid of cells of size `link`.
-DisjointSets connect(const ParticleSet& p, const std::vector<std::size_t>& members, double link) {
+// Connects the listed particles closer than `link` with a hash grid of cells of size `link`; with
+// `link_of` (per particle, none above `link`), a pair closer than the larger of its two links.
+DisjointSets connect(const ParticleSet& p, const std::vector<std::size_t>& members, double link,
+                     const std::vector<double>* link_of = nullptr) {
   DisjointSets sets(members.size());
   std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
   auto key = [&](std::int64_t x, std::int64_t y, std::int64_t z) { return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791); };
@@ -53,8 +55,16 @@ DisjointSets connect(const ParticleSet& p, const std::vector<std::size_t>& membe
         for (std::int64_t dx = -1; dx <= 1; ++dx) {
           const auto it = cells.find(key(cx + dx, cy + dy, cz + dz));
           if (it == cells.end()) continue;
-          for (std::size_t q : it->second)
-            if (q > k && norm2(p.pos[members[q]] - x) < link2) sets.join(k, q);
+          for (std::size_t q : it->second) {
+            if (q <= k) continue;
+            const double d2 = norm2(p.pos[members[q]] - x);
+            if (!link_of) {
+              if (d2 < link2) sets.join(k, q);
+            } else {
+              const double l = std::max((*link_of)[members[k]], (*link_of)[members[q]]);
+              if (d2 < l * l) sets.join(k, q);
+            }
+          }
         }
   }
   return sets;
@@ -129,7 +139,8 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
   if (os.target_index >= 0) {
     // The plug: a piece of the target cut out of the plate that leaves with the projectile. The target's
     // intact particles (damage < kFailedDamage: a failed particle carries no tension, so it holds nothing together)
-    // are linked into pieces by distance (1.5 dx). The plate is the piece, or pieces, holding a clamped
+    // are linked into pieces by distance (1.5 dx; in a two-resolution target 1.5 times each particle's own
+    // spacing). The plate is the piece, or pieces, holding a clamped
     // particle (the heaviest piece when nothing is clamped); the plug is the heaviest other piece whose
     // mass-weighted velocity along the impact direction exceeds half the projectile's residual velocity,
     // together with the failed particles that travel with it (faster than that, within 1.5 dx of it: the
@@ -143,7 +154,17 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
     if (out.residual_velocity > os.settle_tolerance)
       for (std::size_t i = 0; i < p.size(); ++i)
         if (p.body[i] == body && p.damage[i] < kFailedDamage) members.push_back(i);
-    DisjointSets sets = connect(p, members, 1.5 * dx);
+    // A two-resolution target links each particle at 1.5 times its own spacing (h / h_factor): its coarse
+    // part is 2 dx apart.
+    std::vector<double> link_of;
+    double link = 1.5 * dx;
+    if (scene.bodies[static_cast<std::size_t>(body)].coarse_particle_count > 0) {
+      link_of.assign(p.size(), 1.5 * dx);
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if (p.body[i] == body) link_of[i] = 1.5 * p.h[i] / spec.numerics.h_factor, link = std::max(link, link_of[i]);
+    }
+    const std::vector<double>* links = link_of.empty() ? nullptr : &link_of;
+    DisjointSets sets = connect(p, members, link, links);
     struct Piece {
       double mass = 0, momentum = 0;
       bool clamped = false;
@@ -183,7 +204,7 @@ CaseObservables measure_observables(const Scene& scene, const ParticleSet& p) {
       const std::size_t plug_count = carried.size();
       for (std::size_t i = 0; i < p.size(); ++i)
         if (p.body[i] == body && p.damage[i] >= kFailedDamage && dot(p.vel[i], direction) > v_cut) carried.push_back(i);
-      DisjointSets with_rim = connect(p, carried, 1.5 * dx);
+      DisjointSets with_rim = connect(p, carried, link, links);
       std::vector<char> joins_plug(carried.size(), 0);
       for (std::size_t k = 0; k < plug_count; ++k) joins_plug[with_rim.find(k)] = 1;
       for (std::size_t k = plug_count; k < carried.size(); ++k)

@@ -19,9 +19,15 @@ constexpr double kV0 = 150.0;       // m/s, projectile speed along -z in every s
 constexpr double kRimR = 0.010;     // m, projectile radius
 constexpr double kClampR = 0.057;   // m, the plate is clamped outside this radius
 
-Scene plate_scene() {
-  return build_scene(load_case_file(std::string(IMPACTSPH_CASES) + "/plate-8mm/case.toml",
-                                    {"output.vtu=false"}, "2 mm"));
+// The rim beyond 30 mm at twice the spacing ([bodies.coarse]), for the two-resolution plate.
+const char* const kCoarseRim =
+    "plate.coarse={ratio=2, region=\"outside-cylinder\", axis=\"z\", axis_point=[\"0 mm\",\"0 mm\",\"0 mm\"], "
+    "radius=\"30 mm\"}";
+
+Scene plate_scene(bool coarse_rim = false) {
+  std::vector<std::string> sets{"output.vtu=false"};
+  if (coarse_rim) sets.push_back(kCoarseRim);
+  return build_scene(load_case_file(std::string(IMPACTSPH_CASES) + "/plate-8mm/case.toml", sets, "2 mm"));
 }
 
 double radius(const Vec3d& x) { return std::hypot(x.x, x.y); }
@@ -106,11 +112,11 @@ TEST(PlugDetection, PlugStillInItsHoleIsFoundButDoesNotPerforate) {
   EXPECT_FALSE(o.perforated);
 }
 
-TEST(PlugDetection, DishingPlateHasNoPlug) {
+void dishing_plate_has_no_plug(bool coarse_rim) {
   // No failure: the plate deflects as a cone, w(r) = W (1 - r/R) up to the clamp radius, and moves with
   // the same profile of speeds; the projectile rides on its centre, its nose well past the rear face of
   // the clamped rim. Joined to the rim through intact material, the centre is no plug.
-  Scene s = plate_scene();
+  Scene s = plate_scene(coarse_rim);
   ParticleSet& p = s.particles;
   const double W = 0.012;
   for (std::size_t i = 0; i < p.size(); ++i) {
@@ -124,6 +130,19 @@ TEST(PlugDetection, DishingPlateHasNoPlug) {
   EXPECT_NEAR(o.residual_velocity, kV0, 1e-9);
   EXPECT_EQ(o.plug_mass, 0.0);
   EXPECT_FALSE(o.perforated);
+}
+TEST(PlugDetection, DishingPlateHasNoPlug) { dishing_plate_has_no_plug(false); }
+// Its coarse rim's particles are 4 mm apart: linked at 1.5 dx they would each be a piece, and the fine
+// centre, cut off from the clamped particles, a plug.
+TEST(PlugDetection, DishingTwoResolutionPlateHasNoPlug) { dishing_plate_has_no_plug(true); }
+
+TEST(PlugDetection, PlugPushedThroughATwoResolutionPlateIsFound) {
+  Scene s = plate_scene(true);
+  ASSERT_GT(s.bodies[static_cast<std::size_t>(s.spec.observables.target_index)].coarse_particle_count, 0u);
+  cut_plug(s, 0.012);
+  const CaseObservables o = measure_observables(s, s.particles);
+  EXPECT_TRUE(o.perforated);
+  EXPECT_NEAR(o.plug_mass, plug_form_mass(s), 1e-12);
 }
 
 TEST(PlugDetection, StoppedProjectileHasNoPlug) {
