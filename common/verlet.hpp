@@ -2,6 +2,7 @@
 // kept (reference/solver.cpp update_neighbours, gpu/solver_impl.hpp step). Lengths in m, speeds in m/s.
 #pragma once
 #include "common/hd.hpp"
+#include "common/kernels.hpp"
 
 namespace impactsph {
 
@@ -19,6 +20,11 @@ IMPACTSPH_HD double search_reach(double support_at_h_max, double contact_distanc
 // srad (h_i + h_j) / 2 is held. With one h, or a variable h (whose lists follow the largest h), every row
 // keeps the one radius.
 inline bool reach_per_pair(double h_min, double h_max, bool variable_h) { return h_min < h_max && !variable_h; }
+// The search radius of one point of smoothing length h (m) when reach_per_pair, its skin included; a pair is
+// held within the larger of its two points' radii.
+IMPACTSPH_HD double point_search_radius(double h, double contact_distance, double srad, double skin) {
+  return search_reach(kernel_support(h), contact_distance, srad, h) + skin;
+}
 
 // The skin a list is built with, as a share of the reach: a larger skin keeps a list over more steps but
 // gives every row more candidates to test.

@@ -135,7 +135,7 @@ void Solver<Real>::sort_particles() {
     launch<kFlush>("slot_radius", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
       const std::int64_t pnt = order[s];
       const double hp = static_cast<double>(h[pnt < n ? pnt : src[pnt - n]]);
-      radius[s] = impactsph::search_reach(static_cast<double>(kernel_support(hp)), contact, srad, hp) + skin;
+      radius[s] = point_search_radius(hp, contact, srad, skin);
     });
   }
   auto held = [=] IMPACTSPH_LAMBDA(std::int64_t s, std::int32_t j, Vec3p xs) {

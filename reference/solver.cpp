@@ -199,7 +199,7 @@ void ReferenceSolver::build_neighbours(const std::vector<Vec3d>& pos, double ski
   if (reach_per_pair(h_min_, h_max_, variable_h_)) {
     point_radius_.resize(points.size());
     auto radius_of = [&](double h) {
-      return impactsph::search_reach(kernel_support(h), contact_reach_.distance, contact_reach_.srad, h) + skin;
+      return point_search_radius(h, contact_reach_.distance, contact_reach_.srad, skin);
     };
     for (std::size_t i = 0; i < pos.size(); ++i) point_radius_[i] = radius_of(h_[i]);
     for (std::size_t g = 0; g < ghosts_.size(); ++g)
