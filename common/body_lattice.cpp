@@ -114,23 +114,35 @@ std::vector<double> cuts_inside(const CaseSpec& spec, int axis, double lo, doubl
 }
 
 
-AxisCells fill_axis(double lo, double hi, const std::vector<double>& cuts, double dx) {
+AxisCells fill_axis(double lo, double hi, const std::vector<double>& cuts, double dx, int block_ratio) {
   std::vector<double> ends{lo};
   ends.insert(ends.end(), cuts.begin(), cuts.end());
   ends.push_back(hi);
+  const std::size_t pieces = ends.size() - 1;
+  const long long r = block_ratio;
   AxisCells out;
-  for (std::size_t piece = 0; piece + 1 < ends.size(); ++piece) {
+  long long first_block = 0;
+  for (std::size_t piece = 0; piece < pieces; ++piece) {
     const double a = ends[piece], length = ends[piece + 1] - a;
     // A piece of exactly n + 1/2 spacings up to rounding takes the finer lattice, n + 1 cells.
     const long long n = std::max(1LL, static_cast<long long>(std::floor(length / dx + 0.5 + 1e-9)));
     const double w = length / double(n);
+    const long long blocks = (n + r - 1) / r;
+    // The first of several pieces ends on a plane: its blocks are counted down from that end.
+    const bool from_top = piece == 0 && pieces > 1;
     for (long long i = 0; i < n; ++i) {
       out.centre.push_back(a + (double(i) + 0.5) * w);
       out.width.push_back(w);
+      out.block.push_back(first_block + (from_top ? blocks - 1 - (n - 1 - i) / r : i / r));
     }
+    first_block += blocks;
   }
   return out;
 }
+
+// The block of r cells that the round lattice's point (i + 1/2) s belongs to: floor(i / r), so that the
+// blocks lie symmetrically about the centre (i = 0 .. r-1 in block 0, i = -r .. -1 in block -1).
+long long round_block(long long i, int r) { return i >= 0 ? i / r : -((-i - 1) / r) - 1; }
 
 // The round lattices: points at offsets (i + 1/2) s from the centre on each of `dim` axes (dim 2: a disk,
 // the cross-section of a cylinder; dim 3: a ball), kept where the distance to the centre is at most R.
@@ -193,7 +205,7 @@ double fit_round_spacing(double radius, double dx, int dim) {
 // inside it), kept where the point lies inside the surface. A symmetry plane that cuts the mesh must be a
 // plane of symmetry of the mesh itself, since the solver mirrors the model across it: the mirror image of
 // every kept point must be inside too (up to 0.5 % of them, points within rounding of the surface).
-BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const std::string& thin_hint) {
+BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const std::string& thin_hint, int block_ratio) {
   const BodySpec& b = spec.bodies[k];
   const std::string key = body_key(k);
   const Vec3d lo = b.mesh->lower(), hi = b.mesh->upper();
@@ -212,7 +224,8 @@ BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const s
                         format_quantity(count, Dimension::Dimensionless) + " particles at spacing " +
                         format_quantity(dx, Dimension::Length) + " (at most 1e9); use a coarser numerics.spacing");
   AxisCells axes[3];
-  for (int a = 0; a < 3; ++a) axes[a] = fill_axis(lo[a], hi[a], cuts_inside(spec, a, lo[a], hi[a], dx), dx);
+  for (int a = 0; a < 3; ++a)
+    axes[a] = fill_axis(lo[a], hi[a], cuts_inside(spec, a, lo[a], hi[a], dx), dx, block_ratio);
   BodyLattice out;
   for (std::size_t iz = 0; iz < axes[2].centre.size(); ++iz)
     for (std::size_t iy = 0; iy < axes[1].centre.size(); ++iy)
@@ -221,6 +234,7 @@ BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const s
         if (!b.mesh->inside(p)) continue;
         out.pts.push_back(p);
         out.cell.push_back({axes[0].width[ix], axes[1].width[iy], axes[2].width[iz]});
+        if (block_ratio > 1) out.block.push_back({axes[2].block[iz], axes[1].block[iy], axes[0].block[ix]});
       }
   for (std::size_t s = 0; s < spec.symmetry.size(); ++s) {
     const SymmetryPlaneSpec& plane = spec.symmetry[s];
@@ -247,14 +261,14 @@ BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const s
 // Lattice points of one body; throws when the body is thinner than two particles. Boxes and the axis of
 // a cylinder use fill_axis, the cross-section of a cylinder and a sphere the fitted round lattice, so
 // that the cells add up to the shape's volume.
-BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx) {
+BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx, int block_ratio) {
   const BodySpec& b = spec.bodies[k];
   const std::string key = body_key(k);
   const std::string thin_hint = " at spacing " + format_quantity(dx, Dimension::Length) +
                                 ": a body needs at least two particles across; make it at least " +
                                 format_quantity(2 * dx, Dimension::Length) +
-                                (b.coarse_ratio > 1 ? " or lower " + key + ".coarse.ratio (the body's lattice is built "
-                                                      "at ratio x numerics.spacing and split outside the region)"
+                                (b.coarse_ratio > 1 ? " or lower " + key + ".coarse.ratio (its coarse region needs two cells "
+                                                      "of ratio x numerics.spacing across)"
                                                     : std::string(" or refine numerics.spacing"));
   BodyLattice out;
   if (b.shape == Shape::Box) {
@@ -279,18 +293,20 @@ BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx) {
                           " particles at spacing " + format_quantity(dx, Dimension::Length) +
                           " (at most 1e9); use a coarser numerics.spacing");
     for (int a = 0; a < 3; ++a)
-      axes[a] = fill_axis(b.box_min[a], b.box_max[a], cuts_inside(spec, a, b.box_min[a], b.box_max[a], dx), dx);
+      axes[a] = fill_axis(b.box_min[a], b.box_max[a], cuts_inside(spec, a, b.box_min[a], b.box_max[a], dx), dx,
+                          block_ratio);
     out.pts.reserve(axes[0].centre.size() * axes[1].centre.size() * axes[2].centre.size());
     for (std::size_t iz = 0; iz < axes[2].centre.size(); ++iz)
       for (std::size_t iy = 0; iy < axes[1].centre.size(); ++iy)
         for (std::size_t ix = 0; ix < axes[0].centre.size(); ++ix) {
           out.pts.push_back({axes[0].centre[ix], axes[1].centre[iy], axes[2].centre[iz]});
           out.cell.push_back({axes[0].width[ix], axes[1].width[iy], axes[2].width[iz]});
+          if (block_ratio > 1) out.block.push_back({axes[2].block[iz], axes[1].block[iy], axes[0].block[ix]});
         }
     return out;
   }
 
-  if (b.shape == Shape::Mesh) return mesh_lattice(spec, k, dx, thin_hint);
+  if (b.shape == Shape::Mesh) return mesh_lattice(spec, k, dx, thin_hint, block_ratio);
 
   if (b.shape == Shape::Sphere) {
     // 1e-9: a diameter of exactly two cells up to rounding is accepted (it holds the 8 points at
@@ -320,6 +336,8 @@ BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx) {
           if (!in_round(q, fold(ix), fold(jy), fold(kz), 3)) continue;
           out.pts.push_back(b.center + Vec3d{(double(ix) + 0.5) * s, (double(jy) + 0.5) * s, (double(kz) + 0.5) * s});
           out.cell.push_back({s, s, s});
+          if (block_ratio > 1)
+            out.block.push_back({round_block(kz, block_ratio), round_block(jy, block_ratio), round_block(ix, block_ratio)});
         }
     return out;
   }
@@ -341,23 +359,31 @@ BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx) {
   int u, v;
   cross_axes(b.axis, u, v);
   const double base = b.base[b.axis];
-  const AxisCells layers = fill_axis(base, base + b.length, cuts_inside(spec, b.axis, base, base + b.length, dx), dx);
+  const AxisCells layers =
+      fill_axis(base, base + b.length, cuts_inside(spec, b.axis, base, base + b.length, dx), dx, block_ratio);
   double s = fit_round_spacing(b.radius, dx, 2);
   out.round_fitted = s > 0;
   if (!out.round_fitted) s = dx;
   const double q = round_q(b.radius, s);
-  std::vector<std::pair<double, double>> section;
+  struct SectionPoint {
+    double u, v;
+    long long block_u, block_v;
+  };
+  std::vector<SectionPoint> section;
   const long long mi = static_cast<long long>(std::ceil(b.radius / s)) + 1;
   for (long long j = -mi; j < mi; ++j)
     for (long long i = -mi; i < mi; ++i)
-      if (in_round(q, fold(i), fold(j), 0, 2)) section.emplace_back((double(i) + 0.5) * s, (double(j) + 0.5) * s);
+      if (in_round(q, fold(i), fold(j), 0, 2))
+        section.push_back({(double(i) + 0.5) * s, (double(j) + 0.5) * s, round_block(i, block_ratio),
+                           round_block(j, block_ratio)});
   out.pts.reserve(layers.centre.size() * section.size());
   for (std::size_t kk = 0; kk < layers.centre.size(); ++kk) {
     // A layer of the nose keeps the points of the cross-section within the profile at its centre (the
     // midpoint rule for the nose's volume); 1e-12 keeps points exactly on it.
     const double keep = section_radius(b, layers.centre[kk] - base);
     const double keep2 = sqr(keep) * (1 + 1e-12);
-    for (const auto& [ou, ov] : section) {
+    for (const SectionPoint& sp : section) {
+      const double ou = sp.u, ov = sp.v;
       if (keep < b.radius && sqr(ou) + sqr(ov) > keep2) continue;
       Vec3d p = b.base, cell;
       p[b.axis] = layers.centre[kk];
@@ -368,51 +394,65 @@ BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx) {
       cell[v] = s;
       out.pts.push_back(p);
       out.cell.push_back(cell);
+      if (block_ratio > 1) out.block.push_back({layers.block[kk], sp.block_v, sp.block_u});
     }
   }
   return out;
 }
 
-// A body at two resolutions (BodySpec::coarse_ratio > 1): its lattice at ratio x dx, then every cell whose
-// centre lies outside the coarse region split into ratio^3 cells of a ratio-th of its widths, in the
-// cell's place in the lattice order (children with x fastest). The split cells fill their parent exactly,
-// so the body keeps its volume, mass and sizes, and a symmetry plane halfway between two coarse layers
-// stays halfway between two fine ones. Throws when the region holds none of the body's cells or all of them.
+// A body at two resolutions (BodySpec::coarse_ratio > 1): its one-resolution lattice at dx, with every
+// complete block of ratio^3 cells whose centre lies in the coarse region merged into one cell (the blocks of
+// AxisCells and round_block, in the order of the lattice at ratio x dx; within a block its cells keep the
+// lattice's order). A merged cell is its block exactly (the sum of its cells' volumes, centred on their
+// centroid), so the body keeps its volume, mass and sizes, and the fine part is the one-resolution lattice
+// point for point, round cross-sections included. Blocks cut by the body's surface (the outer ring of a round
+// section, a layer left over where a count does not divide by the ratio) stay fine. Throws when the body is
+// thinner than two cells at ratio x dx, or when the region merges none of its blocks or all of its cells.
 BodyLattice two_resolution_lattice(const CaseSpec& spec, std::size_t k, double dx) {
   const BodySpec& b = spec.bodies[k];
   const int r = b.coarse_ratio;
   const double coarse_dx = r * dx;
-  const BodyLattice coarse = lattice(spec, k, coarse_dx);
+  lattice(spec, k, coarse_dx);  // its checks only: two coarse cells across, the message naming coarse.ratio
+  const BodyLattice fine = lattice(spec, k, dx, r);
+  std::vector<std::size_t> order(fine.pts.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t c) { return fine.block[a] < fine.block[c]; });
+
   BodyLattice out;
-  out.round_fitted = coarse.round_fitted;
-  std::size_t kept_coarse = 0;
-  for (std::size_t i = 0; i < coarse.pts.size(); ++i) {
-    const Vec3d& q = coarse.pts[i];
-    const Vec3d& c = coarse.cell[i];
-    if (in_fixed_region(b.coarse_region, q, 1e-9 * dx)) {
-      out.pts.push_back(q);
-      out.cell.push_back(c);
-      out.spacing.push_back(coarse_dx);
-      ++kept_coarse;
-      continue;
+  out.round_fitted = fine.round_fitted;
+  const std::size_t block_cells = static_cast<std::size_t>(r) * r * r;
+  std::size_t merged = 0;
+  for (std::size_t first = 0; first < order.size();) {
+    std::size_t end = first + 1;
+    while (end < order.size() && fine.block[order[end]] == fine.block[order[first]]) ++end;
+    Vec3d centre{0, 0, 0}, widths{0, 0, 0};
+    for (std::size_t n = first; n < end; ++n) {
+      centre = centre + fine.pts[order[n]];
+      widths = widths + fine.cell[order[n]];
     }
-    const Vec3d w = c * (1.0 / r);
-    for (int kz = 0; kz < r; ++kz)
-      for (int jy = 0; jy < r; ++jy)
-        for (int ix = 0; ix < r; ++ix) {
-          const Vec3d offset{(ix + 0.5) * w.x - 0.5 * c.x, (jy + 0.5) * w.y - 0.5 * c.y, (kz + 0.5) * w.z - 0.5 * c.z};
-          out.pts.push_back(q + offset);
-          out.cell.push_back(w);
-          out.spacing.push_back(dx);
-        }
+    centre = centre * (1.0 / double(end - first));
+    if (end - first == block_cells && in_fixed_region(b.coarse_region, centre, 1e-9 * dx)) {
+      out.pts.push_back(centre);
+      out.cell.push_back(widths * (1.0 / double(r * r)));  // each of the r cells along an axis counted r^2 times
+      out.spacing.push_back(coarse_dx);
+      ++merged;
+    } else {
+      for (std::size_t n = first; n < end; ++n) {
+        out.pts.push_back(fine.pts[order[n]]);
+        out.cell.push_back(fine.cell[order[n]]);
+        out.spacing.push_back(dx);
+      }
+    }
+    first = end;
   }
   const std::string key = body_key(k) + ".coarse";
-  if (kept_coarse == 0)
+  if (merged == 0)
     throw CaseError(spec.source_file, b.line, key,
-                    "the region holds none of the centres of " + body_name(spec, k) + "'s cells at its coarse spacing " +
+                    "the region holds the centre of none of " + body_name(spec, k) + "'s complete blocks of " +
+                        std::to_string(block_cells) + " cells (its coarse spacing is " +
                         format_quantity(coarse_dx, Dimension::Length) +
-                        ": it lies outside the body; move or enlarge it, or remove [bodies.coarse]");
-  if (kept_coarse == coarse.pts.size())
+                        "): it lies outside the body; move or enlarge it, or remove [bodies.coarse]");
+  if (merged == out.pts.size())
     throw CaseError(spec.source_file, b.line, key,
                     "the region holds every cell of " + body_name(spec, k) +
                         ", so no part of it is at numerics.spacing; shrink the region, or remove [bodies.coarse] and "

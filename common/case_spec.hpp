@@ -63,9 +63,9 @@ struct BodySpec {
   // [h_min_factor, h_max_factor] x h0 (h0 = numerics.h_factor x spacing). Off by default.
   bool variable_h = false;
   double h_min_factor = 0.2, h_max_factor = 2.0;  // X: HMIN = 0.2, HMAX = 2.0 (LS-DYNA defaults)
-  // Two resolutions in one body ([bodies.coarse]): the body's lattice is built at coarse_ratio x spacing,
-  // and every cell whose centre lies outside coarse_region is split into coarse_ratio^3 cells, so the body
-  // is at about the case's spacing there and coarse_ratio times coarser inside the region (scene.cpp).
+  // Two resolutions in one body ([bodies.coarse]): the body's lattice at the spacing, with every complete
+  // block of coarse_ratio^3 cells whose centre lies inside coarse_region merged into one cell, so the body is
+  // coarse_ratio times coarser inside the region and the case's lattice elsewhere (scene.cpp).
   // coarse_ratio 1: one resolution; the case reader accepts 2 (the verified ratio); the scene builder takes
   // any whole number. The region takes the kinds of [[boundaries.fixed]] (its body unused).
   int coarse_ratio = 1;

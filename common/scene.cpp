@@ -26,8 +26,8 @@
 // within 10 % fits (a body a few spacings across) is dx kept and the masses scaled to rho0 V, with a
 // warning. Every particle centre lies inside its shape; density rho0, zero energy, stress and damage,
 // and h = h_factor dx. A body with a coarse region ([bodies.coarse], two_resolution_lattice) is the same
-// lattice at ratio x dx with the cells outside the region split into ratio^3; its particles' h follows
-// their own spacing, and its coarse part takes a copy of the material (Scene::materials).
+// lattice with its complete blocks of ratio^3 cells in the region merged into one; its particles' h
+// follows their own spacing, and its coarse part takes a copy of the material (Scene::materials).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

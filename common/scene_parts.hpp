@@ -2,6 +2,7 @@
 // interface): body_lattice.cpp fits each body's lattice to its shape, scene_checks.cpp checks the geometry
 // (overlaps, symmetry planes, fixed regions, contacts), scene.cpp builds the Scene and describes its bodies.
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -31,8 +32,13 @@ struct Box3 {
 // Cells of one lattice axis that fill [lo, hi] exactly: the interval is cut at the symmetry planes strictly
 // inside it, and each piece of length L holds n = max(1, round(L / dx)) cells of width L / n, so that the
 // outermost cells end on the body's faces and the layers next to a plane lie half a cell from it.
+// With a block ratio r > 1 (two_resolution_lattice) each cell also names its block of r neighbouring cells,
+// counted up along the axis; a piece's cells are grouped from its symmetry plane outwards, so no block
+// straddles a plane, and where a piece's count does not divide by r the cells left over (the last block,
+// short) lie at the end away from the plane.
 struct AxisCells {
   std::vector<double> centre, width;
+  std::vector<long long> block;
 };
 
 // The particles of one body before clipping, each with its cell (widths along x, y, z), and how the
@@ -42,6 +48,9 @@ struct BodyLattice {
   std::vector<Vec3d> cell;  // m, widths of each particle's lattice cell along x, y, z
   std::vector<double> spacing;  // m, each particle's nominal spacing: dx, or ratio dx in a coarse region
   bool round_fitted = true; // false: no round-lattice spacing within 10 % of dx fits; dx kept
+  // With a block ratio r > 1: each point's block of r^3 neighbouring cells, its indices along the lattice's
+  // axes from the outermost loop inwards, so that sorting by it gives the order of the lattice at r dx.
+  std::vector<std::array<long long, 3>> block;
 };
 
 // body_lattice.cpp
@@ -57,14 +66,14 @@ Box3 shape_bounds(const BodySpec& b);
 bool strictly_inside(const BodySpec& b, const Vec3d& p, double eps);
 std::string plane_key(const CaseSpec& spec, std::size_t s);
 std::vector<double> cuts_inside(const CaseSpec& spec, int axis, double lo, double hi, double dx);
-AxisCells fill_axis(double lo, double hi, const std::vector<double>& cuts, double dx);
+AxisCells fill_axis(double lo, double hi, const std::vector<double>& cuts, double dx, int block_ratio = 1);
 bool in_round(double q, long long i, long long j, long long k, int dim);
 double round_q(double radius, double s);
 long long fold(long long i);
 long long round_count(double radius, double s, int dim);
 double fit_round_spacing(double radius, double dx, int dim);
-BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const std::string& thin_hint);
-BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx);
+BodyLattice mesh_lattice(const CaseSpec& spec, std::size_t k, double dx, const std::string& thin_hint, int block_ratio = 1);
+BodyLattice lattice(const CaseSpec& spec, std::size_t k, double dx, int block_ratio = 1);
 BodyLattice two_resolution_lattice(const CaseSpec& spec, std::size_t k, double dx);
 
 // scene_checks.cpp

@@ -1,5 +1,5 @@
 // Two resolutions in one body ([bodies.coarse], issue 18): the case keys and their errors, the lattice
-// (coarse cells kept in the region, the others split into ratio^3 cells in their place), each particle's h,
+// (the one-resolution lattice with its complete blocks of ratio^3 cells in the region merged), each particle's h,
 // the coarse part's copy of the material, and the neighbour list that holds a pair within the larger of
 // its two radii.
 #include <gtest/gtest.h>
@@ -46,7 +46,7 @@ std::tuple<long, long, long> key_of(const Vec3d& x, double dx) {
 
 }  // namespace
 
-TEST(TwoResolutions, CoarseCellsKeptInTheRegionAndSplitOutsideIt) {
+TEST(TwoResolutions, CompleteBlocksInTheRegionAreMergedIntoCoarseCells) {
   const double dx = 1e-3;
   const Scene two = build_scene(bar_with_coarse_half(dx, 2));
   CaseSpec uniform_spec = bar_with_coarse_half(dx, 2);
@@ -116,6 +116,45 @@ TEST(TwoResolutions, QuarterDiscWithACoarseRimKeepsItsMassAndSizes) {
     EXPECT_GT(x.x, 0);
     EXPECT_GT(x.y, 0);
   }
+  // The fine part is the one-resolution lattice point for point, the round cross-section included, and each
+  // coarse particle stands for eight of its points, centred in the region.
+  CaseSpec uniform_spec = s;
+  uniform_spec.bodies[0].coarse_ratio = 1;
+  const Scene one = build_scene(uniform_spec);
+  std::set<std::tuple<double, double, double>> uniform_points;
+  for (const Vec3d& x : one.particles.pos) uniform_points.insert({x.x, x.y, x.z});
+  std::size_t fine = 0, coarse = 0;
+  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
+    const Vec3d& x = scene.particles.pos[i];
+    if (scene.particles.h[i] > 1.5 * dx) {
+      ++coarse;
+      EXPECT_GE(x.x * x.x + x.y * x.y, sqr(15 * dx));
+      continue;
+    }
+    ++fine;
+    EXPECT_TRUE(uniform_points.count({x.x, x.y, x.z})) << "a fine point off the one-resolution lattice";
+  }
+  EXPECT_EQ(coarse, b.coarse_particle_count);
+  EXPECT_EQ(fine + 8 * coarse, one.particles.size());
+}
+
+// A count of cells that does not divide by the ratio: the layer left over stays fine, also in the region.
+TEST(TwoResolutions, ALayerLeftOverByTheRatioStaysFine) {
+  const double dx = 1e-3;
+  CaseSpec s = bar_with_coarse_half(dx, 2);
+  s.bodies[0].box_max.z = 5 * dx;
+  s.bodies[0].coarse_region.box_max.z = 5 * dx;
+  const Scene scene = build_scene(s);
+  const ParticleSet& p = scene.particles;
+  // Fine half 6 x 4 x 5 cells; coarse half 3 x 2 x 2 blocks and the top layer's 6 x 4 cells.
+  ASSERT_EQ(p.size(), 120u + 12u + 24u);
+  EXPECT_EQ(scene.bodies[0].coarse_particle_count, 12u);
+  double mass = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    mass += p.mass[i];
+    if (p.pos[i].x > 6 * dx && p.h[i] < 1.5 * dx) EXPECT_NEAR(p.pos[i].z, 4.5 * dx, 1e-12);
+  }
+  EXPECT_NEAR(mass, kRho * 12 * 4 * 5 * dx * dx * dx, 1e-12 * mass);
 }
 
 TEST(TwoResolutions, TheCoarsePartsFractureEnergyFollowsItsSmoothingLength) {
