@@ -138,6 +138,40 @@ TEST(TwoResolutions, QuarterDiscWithACoarseRimKeepsItsMassAndSizes) {
   EXPECT_EQ(fine + 8 * coarse, one.particles.size());
 }
 
+// A ball coarse outside a box about its centre: its blocks of eight lie symmetrically about the centre, the
+// fine part is the one-resolution lattice, and the ball keeps its mass.
+TEST(TwoResolutions, BallWithACoarseShellIsItsLatticeWithBlocksMerged) {
+  const double dx = 1e-3;
+  CaseSpec s = spec_with_spacing(dx);
+  s.bodies.push_back(sphere("ball", {0, 0, 0}, 8 * dx));
+  s.bodies[0].coarse_ratio = 2;
+  s.bodies[0].coarse_region.kind = FixedRegionSpec::Kind::Box;
+  s.bodies[0].coarse_region.box_min = {-20 * dx, -20 * dx, 2.5 * dx};
+  s.bodies[0].coarse_region.box_max = {20 * dx, 20 * dx, 20 * dx};
+  const Scene two = build_scene(s);
+  CaseSpec uniform_spec = s;
+  uniform_spec.bodies[0].coarse_ratio = 1;
+  const Scene one = build_scene(uniform_spec);
+  std::set<std::tuple<double, double, double>> uniform_points;
+  for (const Vec3d& x : one.particles.pos) uniform_points.insert({x.x, x.y, x.z});
+  std::size_t fine = 0, coarse = 0;
+  for (std::size_t i = 0; i < two.particles.size(); ++i) {
+    const Vec3d& x = two.particles.pos[i];
+    if (two.particles.h[i] > 1.5 * dx) {
+      ++coarse;
+      // a block's centre: (2 I + 1) s on each axis, in the region
+      for (int a = 0; a < 3; ++a) EXPECT_NEAR(std::fmod(std::abs(x[a]) / two.bodies[0].lattice_spacing[a], 2.0), 1.0, 1e-9);
+      EXPECT_GT(x.z, 2.5 * dx);
+      continue;
+    }
+    ++fine;
+    EXPECT_TRUE(uniform_points.count({x.x, x.y, x.z})) << "a fine point off the one-resolution lattice";
+  }
+  EXPECT_GT(coarse, 0u);
+  EXPECT_EQ(fine + 8 * coarse, one.particles.size());
+  EXPECT_NEAR(two.bodies[0].generated_mass / two.bodies[0].specified_mass, 1.0, 1e-12);
+}
+
 // A count of cells that does not divide by the ratio: the layer left over stays fine, also in the region.
 TEST(TwoResolutions, ALayerLeftOverByTheRatioStaysFine) {
   const double dx = 1e-3;
