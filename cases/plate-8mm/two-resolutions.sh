@@ -95,7 +95,7 @@ for v in sorted(rows, reverse=True):
         r = p[f]
         diff = '%+.2f %%' % (100 * (r['vr'] / ref['vr'] - 1)) if ref and f != 'uniform' and ref['vr'] > 0 else ''
         plug = '%.2f g at %.1f m/s' % (r['plug'], r['plug_v']) if r['perforated'] else 'none'
-        L.append('| %.0f m/s | %s | %.2f m/s | %s | %s | %d (%d) | %d | %.0f s | %.3f %% |' % (
+        L.append('| %g m/s | %s | %.2f m/s | %s | %s | %d (%d) | %d | %.0f s | %.3f %% |' % (
             v, name(f), r['vr'], diff, plug, r['particles'], r['coarse'], r['steps'], r['wall'], 100 * r['drift']))
 limits = []
 for f in ['uniform'] + forms:
@@ -114,11 +114,15 @@ if limits:
         L.append('| %s | %.2f - %.2f m/s | %.1f m/s | %d | %.1f min |' % (
             name(f), lo, hi, b['limit_m_s'], len(b['runs']), wall / 60))
 L += ['', 'Target (issue 18): the residual velocity at 298 and 175 m/s within 1 % of the run at one resolution.', '',
-      'The fine part of a two-resolution plate is the coarse lattice split: in a round cross-section that is '
-      'the round lattice fitted at twice the spacing, halved, not the one fitted at the spacing (the points '
-      'differ by the two fits, a few tenths of a percent of the spacing). A rim beyond 56 mm leaves only the '
-      'clamped ring coarse, so that row measures the lattice alone; near the limit, where the plug is a few '
-      'rings of particles, that moves the residual velocity by tens of percent at 2 mm.', '']
+      'The fine part of a two-resolution plate is its one-resolution lattice point for point: the rim is that '
+      'lattice with its complete blocks of 2 x 2 x 2 cells merged (fcc0d45), so a difference from one resolution '
+      'is the coarse rim\'s own. At spacing dx the rim\'s cells are 2 dx, 8 mm / (2 dx) of them through the plate. '
+      'A rim beyond 56 mm coarsens little more than the clamped ring (beyond 57 mm).']
+calibration = rows.get(155.5, {}).get('uniform')
+if calibration and 'weldox-calibration' in calibration['command_line']:
+    L[-1] += (' The one-resolution run at 155.5 m/s is the calibration run of the Weldox fracture energy (its '
+              'summary.json copied from cases/plate-8mm/report-calibrated/fracture-energy-1mm-155.5; one thread).')
+L.append('')
 open(os.path.join(out, 'report.md'), 'w').write('\n'.join(L))
 print('\n'.join(L))
 PY
