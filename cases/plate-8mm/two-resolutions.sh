@@ -13,7 +13,10 @@
 # Environment: BUILD_DIR (default build), SPACING (default 1mm), VELOCITIES (default "298 175", m/s),
 # RADII (default "30", mm), RATIO (default 2), LIMIT (default none: "FROM TO" in m/s),
 # RUNS (default runs/plate-8mm-two-resolutions-SPACING), OUT (default
-# cases/plate-8mm/report-two-resolutions-SPACING). Runs that finished are kept; one thread each, in turn.
+# cases/plate-8mm/report-two-resolutions-SPACING), TIMING (default none: an end time such as 40us, for which
+# each form runs again at the first of VELOCITIES, one after the other, for the report's wall-time
+# comparison under the same load; run it with the machine otherwise as it will be for all forms).
+# Runs that finished are kept; one thread each, in turn.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${BUILD_DIR:-build}
@@ -52,6 +55,19 @@ if [[ -z "${REPORT_ONLY:-}" ]]; then
         --tolerance 3 --jobs 1 -q --set output.vtu=false "${extra[@]}" --out "$dir" > "$dir.log" 2>&1
     fi
   done
+  if [[ -n "${TIMING:-}" ]]; then
+    v=${VELOCITIES%% *}
+    for form in "${forms[@]}"; do
+      extra=()
+      [[ $form != uniform ]] && extra=(--set "$(coarse "${form#r}")")
+      dir="$RUNS/timing-$form"
+      finished "$dir/summary.json" && continue
+      echo "two-resolutions: timing, $form at $v m/s to $TIMING, spacing $SPACING -> $dir"
+      "$BUILD_DIR/impactsph" run cases/plate-8mm/case.toml --spacing "$SPACING" --threads 1 -q \
+        --set "projectile.velocity=$v m/s" --set output.vtu=false --set "time.end=$TIMING" "${extra[@]}" \
+        --out "$dir" > "$dir.log" 2>&1
+    done
+  fi
 fi
 
 python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" "$RATIO" <<'PY'
@@ -63,7 +79,7 @@ runs, out, commit, ratio = sys.argv[1:5]
 rows = {}   # speed -> form -> run
 for path in sorted(glob.glob(os.path.join(runs, '*', 'summary.json'))):
     name = os.path.basename(os.path.dirname(path))
-    if name.startswith('limit-'):
+    if name.startswith('limit-') or name.startswith('timing-'):
         continue
     r = read_run(path)
     if r is None or not r['completed']:
@@ -113,15 +129,34 @@ if limits:
         lo, hi = b['bracket_m_s']
         L.append('| %s | %.2f - %.2f m/s | %.1f m/s | %d | %.1f min |' % (
             name(f), lo, hi, b['limit_m_s'], len(b['runs']), wall / 60))
+timings = []
+for path in sorted(glob.glob(os.path.join(runs, 'timing-*', 'summary.json'))):
+    t = json.load(open(path))
+    if t.get('completed'):
+        timings.append((os.path.basename(os.path.dirname(path))[len('timing-'):], t))
+if timings:
+    base = dict(timings).get('uniform')
+    L += ['', '## Wall time under the same load', '',
+          'Each form at %g m/s to %.0f us, one thread, run one after the other with the machine as it was for all '
+          'of them (TIMING in two-resolutions.sh).' % (read_run(os.path.join(runs, 'timing-' + timings[0][0]))['v0'],
+                                                        1e6 * timings[0][1]['simulated_time_s']), '',
+          '| plate | particles | steps | wall | particle-steps/s | mean neighbours | wall against one resolution |',
+          '|---|---|---|---|---|---|---|']
+    for f, t in sorted(timings, key=lambda ft: (ft[0] != 'uniform', ft[0])):
+        ratio = '%.2f' % (t['wall_time_s'] / base['wall_time_s']) if base else ''
+        L.append('| %s | %d | %d | %.0f s | %.3g | %.1f | %s |' % (
+            name(f), t['particles'], t['steps'], t['wall_time_s'], t['particles'] * t['steps'] / t['wall_time_s'],
+            t['mean_neighbours'], ratio))
 L += ['', 'Target (issue 18): the residual velocity at 298 and 175 m/s within 1 % of the run at one resolution.', '',
       'The fine part of a two-resolution plate is its one-resolution lattice point for point: the rim is that '
       'lattice with its complete blocks of 2 x 2 x 2 cells merged (fcc0d45), so a difference from one resolution '
       'is the coarse rim\'s own. At spacing dx the rim\'s cells are 2 dx, 8 mm / (2 dx) of them through the plate. '
       'A rim beyond 56 mm coarsens little more than the clamped ring (beyond 57 mm).']
-calibration = rows.get(155.5, {}).get('uniform')
-if calibration and 'weldox-calibration' in calibration['command_line']:
-    L[-1] += (' The one-resolution run at 155.5 m/s is the calibration run of the Weldox fracture energy (its '
-              'summary.json copied from cases/plate-8mm/report-calibrated/fracture-energy-1mm-155.5; one thread).')
+calibration = sorted(v for v, p in rows.items() if 'uniform' in p and 'weldox-calibration' in p['uniform']['command_line'])
+if calibration:
+    L[-1] += (' The one-resolution runs at %s m/s are the calibration runs of the Weldox fracture energy (their '
+              'summary.json copied from cases/plate-8mm/report-calibrated/fracture-energy-1mm-V; one thread).'
+              % ' and '.join('%g' % v for v in calibration))
 L.append('')
 open(os.path.join(out, 'report.md'), 'w').write('\n'.join(L))
 print('\n'.join(L))
