@@ -44,6 +44,31 @@ std::tuple<long, long, long> key_of(const Vec3d& x, double dx) {
   return {std::lround(x.x / (0.25 * dx)), std::lround(x.y / (0.25 * dx)), std::lround(x.z / (0.25 * dx))};
 }
 
+// Compares a two-resolution scene with its case at one resolution: every fine particle (h below 1.5 dx)
+// stands on a point of the one-resolution lattice and each coarse one stands for eight of them;
+// `coarse_point` checks where each coarse particle stands. Returns the number of coarse particles.
+template <class CoarsePoint>
+std::size_t expect_blocks_of_the_lattice(const CaseSpec& s, const Scene& two, double dx, CoarsePoint coarse_point) {
+  CaseSpec uniform_spec = s;
+  uniform_spec.bodies[0].coarse_ratio = 1;
+  const Scene one = build_scene(uniform_spec);
+  std::set<std::tuple<double, double, double>> uniform_points;
+  for (const Vec3d& x : one.particles.pos) uniform_points.insert({x.x, x.y, x.z});
+  std::size_t fine = 0, coarse = 0;
+  for (std::size_t i = 0; i < two.particles.size(); ++i) {
+    const Vec3d& x = two.particles.pos[i];
+    if (two.particles.h[i] > 1.5 * dx) {
+      ++coarse;
+      coarse_point(x);
+      continue;
+    }
+    ++fine;
+    EXPECT_TRUE(uniform_points.count({x.x, x.y, x.z})) << "a fine point off the one-resolution lattice";
+  }
+  EXPECT_EQ(fine + 8 * coarse, one.particles.size());
+  return coarse;
+}
+
 }  // namespace
 
 TEST(TwoResolutions, CompleteBlocksInTheRegionAreMergedIntoCoarseCells) {
@@ -118,24 +143,9 @@ TEST(TwoResolutions, QuarterDiscWithACoarseRimKeepsItsMassAndSizes) {
   }
   // The fine part is the one-resolution lattice point for point, the round cross-section included, and each
   // coarse particle stands for eight of its points, centred in the region.
-  CaseSpec uniform_spec = s;
-  uniform_spec.bodies[0].coarse_ratio = 1;
-  const Scene one = build_scene(uniform_spec);
-  std::set<std::tuple<double, double, double>> uniform_points;
-  for (const Vec3d& x : one.particles.pos) uniform_points.insert({x.x, x.y, x.z});
-  std::size_t fine = 0, coarse = 0;
-  for (std::size_t i = 0; i < scene.particles.size(); ++i) {
-    const Vec3d& x = scene.particles.pos[i];
-    if (scene.particles.h[i] > 1.5 * dx) {
-      ++coarse;
-      EXPECT_GE(x.x * x.x + x.y * x.y, sqr(15 * dx));
-      continue;
-    }
-    ++fine;
-    EXPECT_TRUE(uniform_points.count({x.x, x.y, x.z})) << "a fine point off the one-resolution lattice";
-  }
+  const std::size_t coarse = expect_blocks_of_the_lattice(
+      s, scene, dx, [&](const Vec3d& x) { EXPECT_GE(x.x * x.x + x.y * x.y, sqr(15 * dx)); });
   EXPECT_EQ(coarse, b.coarse_particle_count);
-  EXPECT_EQ(fine + 8 * coarse, one.particles.size());
 }
 
 // A ball coarse outside a box about its centre: its blocks of eight lie symmetrically about the centre, the
@@ -149,26 +159,13 @@ TEST(TwoResolutions, BallWithACoarseShellIsItsLatticeWithBlocksMerged) {
   s.bodies[0].coarse_region.box_min = {-20 * dx, -20 * dx, 2.5 * dx};
   s.bodies[0].coarse_region.box_max = {20 * dx, 20 * dx, 20 * dx};
   const Scene two = build_scene(s);
-  CaseSpec uniform_spec = s;
-  uniform_spec.bodies[0].coarse_ratio = 1;
-  const Scene one = build_scene(uniform_spec);
-  std::set<std::tuple<double, double, double>> uniform_points;
-  for (const Vec3d& x : one.particles.pos) uniform_points.insert({x.x, x.y, x.z});
-  std::size_t fine = 0, coarse = 0;
-  for (std::size_t i = 0; i < two.particles.size(); ++i) {
-    const Vec3d& x = two.particles.pos[i];
-    if (two.particles.h[i] > 1.5 * dx) {
-      ++coarse;
-      // a block's centre: (2 I + 1) s on each axis, in the region
-      for (int a = 0; a < 3; ++a) EXPECT_NEAR(std::fmod(std::abs(x[a]) / two.bodies[0].lattice_spacing[a], 2.0), 1.0, 1e-9);
-      EXPECT_GT(x.z, 2.5 * dx);
-      continue;
-    }
-    ++fine;
-    EXPECT_TRUE(uniform_points.count({x.x, x.y, x.z})) << "a fine point off the one-resolution lattice";
-  }
+  // a block's centre: (2 I + 1) s on each axis, in the region
+  const std::size_t coarse = expect_blocks_of_the_lattice(s, two, dx, [&](const Vec3d& x) {
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(std::fmod(std::abs(x[a]) / two.bodies[0].lattice_spacing[a], 2.0), 1.0, 1e-9);
+    EXPECT_GT(x.z, 2.5 * dx);
+  });
   EXPECT_GT(coarse, 0u);
-  EXPECT_EQ(fine + 8 * coarse, one.particles.size());
   EXPECT_NEAR(two.bodies[0].generated_mass / two.bodies[0].specified_mass, 1.0, 1e-12);
 }
 
