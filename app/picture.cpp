@@ -122,19 +122,29 @@ struct Groups {
 
 Groups cut_particles(const Scene& scene, const ParticleSet& p, const Cut& c, int projectile, PictureField field) {
   const std::size_t bodies = scene.bodies.size();
-  // Of each body, the signed distance of its particle nearest the plane: its layer.
-  std::vector<double> layer(bodies, std::numeric_limits<double>::infinity());
+  // A body at two resolutions has two lattices: its coarse particles (those of the coarse copy of its
+  // material, Scene::materials) are drawn with their own cells, from their own layer.
+  const std::size_t case_materials = scene.spec.materials.size();
+  auto lattice_of = [&](std::size_t i) {
+    return 2 * static_cast<std::size_t>(p.body[i]) + (static_cast<std::size_t>(p.material[i]) >= case_materials ? 1 : 0);
+  };
+  auto spacing_of = [&](std::size_t lattice) -> const Vec3d& {
+    const BodyInfo& body = scene.bodies[lattice / 2];
+    return lattice % 2 ? body.coarse_lattice_spacing : body.lattice_spacing;
+  };
+  // Of each lattice, the signed distance of its particle nearest the plane: its layer.
+  std::vector<double> layer(2 * bodies, std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double dist = p.pos[i][c.normal] - c.position;
-    double& l = layer[static_cast<std::size_t>(p.body[i])];
+    double& l = layer[lattice_of(i)];
     if (std::abs(dist) < std::abs(l)) l = dist;
   }
   const bool outline = bodies > 1;
   Groups g;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const std::size_t b = static_cast<std::size_t>(p.body[i]);
-    const Vec3d& ls = scene.bodies[b].lattice_spacing;
-    if (std::abs(p.pos[i][c.normal] - c.position - layer[b]) >= 0.5 * ls[c.normal]) continue;
+    const Vec3d& ls = spacing_of(lattice_of(i));
+    if (std::abs(p.pos[i][c.normal] - c.position - layer[lattice_of(i)]) >= 0.5 * ls[c.normal]) continue;
     const bool fails = can_fail(scene.materials[static_cast<std::size_t>(p.material[i])]);
     const bool failed = fails && p.damage[i] >= kFailedDamage;
     const int group = (failed ? kFailed : kIntact) + (outline && static_cast<int>(b) == projectile ? 1 : 0);
