@@ -22,7 +22,8 @@
 # that held and the lowest that perforated), SEARCH_FILES (searches made before, "model:PATH" per word,
 # PATH a ballistic.json: the 12 mm plate's default is its committed reports), SEARCHES (default below:
 # "criterion spacing_mm from_m_s to_m_s tolerance_m_s" per line; none for the 12 mm plate), JOBS
-# (default 2). A search whose ballistic.json exists is not run again (delete its folder, or give RUNS a
+# (default 2). CALIBRATION may also name a ballistic.json (a committed copy). Runs made by hand that all
+# perforated give no limit: the slowest of them is drawn as a bound from above. A search whose ballistic.json exists is not run again (delete its folder, or give RUNS a
 # new name after changing the code). A 2 mm search of the 8 mm plate takes a few minutes on two cores, a
 # 1.333 mm one about half an hour; at 1 mm the calibration command of the material file is the search
 # (about 25 minutes a round).
@@ -78,11 +79,14 @@ COMMAND="bash cases/plate-8mm/limit-vs-spacing.sh"
 [[ "$PLATE" != plate-8mm ]] && COMMAND="PLATE=$PLATE $COMMAND"
 [[ "$OUT" != "cases/$PLATE/report-limit-vs-spacing" ]] && COMMAND="OUT=$OUT RUNS=$RUNS SEARCHES=... $COMMAND"
 [[ -n "${BRACKET_RUNS:-}" ]] && COMMAND="BRACKET_RUNS=\"$BRACKET_RUNS\" $COMMAND"
+[[ "$PLATE" == plate-8mm && -n "${SEARCH_FILES:-}" ]] && COMMAND="SEARCH_FILES=\"$(echo $SEARCH_FILES)\" $COMMAND"
+[[ "$CALIBRATION" == *.json ]] && COMMAND="CALIBRATION=$CALIBRATION $COMMAND"
+[[ -n "${REPORT_ONLY:-}" ]] && COMMAND="REPORT_ONLY=1 $COMMAND"
 COMMAND="$COMMAND" SEARCH_FILES="${SEARCH_FILES:-}" python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" \
   "$CALIBRATION" "$PLATE" <<'PY'
 import glob, json, os, shlex, subprocess, sys, tomllib
 sys.path.insert(0, 'cases/plate-8mm')
-from plate_runs import read_run, recht_ipson_p2_limit
+from plate_runs import read_run, recht_ipson_p2_limit, user_command
 
 runs, out, commit, calibration, plate = sys.argv[1:6]
 # The experiment's ballistic limit (m/s) where the case states one in its expected.toml, else None.
@@ -121,7 +125,7 @@ for item in os.environ.get('BRACKET_RUNS', '').split():
         b['runs'].append({'v_impact_m_s': r['v0'], 'perforated': r['perforated'], 'residual_velocity_m_s': r['vr'],
                           'plug_mass_kg': r['plug'] * 1e-3, 'plug_velocity_m_s': r['plug_v'],
                           'settled_time_s': r['settled'], 'wall_s': r['wall']})
-        b['command_line'].append(r['command_line'])
+        b['command_line'].append(user_command(d))
     held = [r['v_impact_m_s'] for r in b['runs'] if not r['perforated']]
     through = [r['v_impact_m_s'] for r in b['runs'] if r['perforated']]
     b['command_line'] = ' ; '.join(b['command_line'])
@@ -182,7 +186,7 @@ lines += ['', 'Searches:', '']
 for model, s, b, wall in rows:
     cl = b['command_line'] if isinstance(b['command_line'], str) else shlex.join(b['command_line'])
     lines.append('- %s at %.3g mm: `%s`%s' % (model, s, cl, ' (report: %s)' % b['report'] if 'report' in b else ''))
-cal = sorted(glob.glob(os.path.join(calibration, 'ballistic.json')))
+cal = sorted(glob.glob(calibration if calibration.endswith('.json') else os.path.join(calibration, 'ballistic.json')))
 if cal:
     lines += ['', 'The calibration command of cases/materials/weldox-460e.toml (1 mm, 149.5 and 155.5 m/s) at the '
               'Gammas tried, from %s:' % calibration, '',
@@ -195,6 +199,13 @@ if cal:
                  for r in b['runs'] if 'v_impact_m_s' in r]
         lines.append('| %s | %s | %s |' % (', '.join('`%s`' % x for x in b['set']), b['status'], '; '.join(items)))
 open(os.path.join(out, 'report.md'), 'w').write('\n'.join(lines) + '\n')
+
+def upper_bound(b):
+    """The slowest run where every run perforated and no limit was found (the limit lies below it), else None."""
+    if b.get('limit_m_s') is not None or not b['runs'] or not all(r.get('perforated') for r in b['runs']):
+        return None
+    return min(r['v_impact_m_s'] for r in b['runs'])
+
 
 data = os.path.join(out, 'limit_vs_spacing.dat')
 with open(data, 'w') as f:
@@ -211,17 +222,27 @@ with open(data, 'w') as f:
             if m == model and recht_ipson_p2(b):
                 f.write('%.4f %.3f\n' % (s, recht_ipson_p2(b)))
         f.write('\n\n')
+    for model in sorted({r[0] for r in rows}):
+        f.write('# %s, every run perforated: the slowest of them (the limit lies below)\n' % model)
+        for m, s, b, wall in rows:
+            if m == model and upper_bound(b):
+                f.write('%.4f %.3f\n' % (s, upper_bound(b)))
+        f.write('\n\n')
 models = sorted({r[0] for r in rows})
 plots = []
 if experiment:
     plots = ['%.1f*0.97 with filledcurves y1=%.1f*1.03 fc rgb "#dddddd" title "experiment +-3 %%"' % (experiment, experiment),
              '%.1f with lines dt 2 lc rgb "black" title "experiment %.1f m/s"' % (experiment, experiment)]
 limits = [b['limit_m_s'] for m, s, b, wall in rows if b.get('limit_m_s')] + ([experiment] if experiment else [])
+limits += [upper_bound(b) for m, s, b, wall in rows if upper_bound(b)]
 low, high = 20 * int(min(limits) / 20 - 1), 20 * int(max(limits) / 20 + 2)
 for k, model in enumerate(models):
     plots.append('"%s" index %d using 1:2:3:4 with yerrorlines pt 7 lc %d title "%s"' % (os.path.basename(data), k, k + 1, model))
     plots.append('"%s" index %d using 1:2 with points pt 6 ps 1.5 lc %d title "%s, Recht-Ipson p = 2 estimate"' % (
         os.path.basename(data), len(models) + k, k + 1, model))
+    if any(m == model and upper_bound(b) for m, s, b, wall in rows):
+        plots.append('"%s" index %d using 1:2 with points pt 11 ps 2 lc %d title "%s, every run perforated: limit below"' % (
+            os.path.basename(data), 2 * len(models) + k, k + 1, model))
 script = '\n'.join([
     'set terminal pngcairo size 800,560',
     'set output "limit_vs_spacing.png"',

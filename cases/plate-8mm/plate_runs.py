@@ -48,3 +48,21 @@ def recht_ipson_p2_limit(points):
     k = (r1 / r2) ** 2
     vb2 = (v1 * v1 - k * v2 * v2) / (1 - k)
     return vb2 ** 0.5 if 0 < vb2 < v1 * v1 else None
+
+
+def user_command(path):
+    """The command that made a run, as a user types it: `build/impactsph` for the program, and for a run
+    continued with --restart the first command rebuilt from its run.json (case, spacing, threads, sets)
+    followed by the restart. path: the run folder or its summary.json, with run.json beside it."""
+    folder = os.path.dirname(summary_path(path))
+    argv = json.load(open(summary_path(path)))['command_line']
+    argv = ['build/impactsph'] + argv[1:]
+    if '--restart' not in argv:
+        return shlex.join(argv)
+    r = json.load(open(os.path.join(folder, 'run.json')))
+    out = argv[argv.index('--restart') + 1]
+    first = ['build/impactsph', 'run', os.path.relpath(r['case_file']), '--spacing', r['spacing'], '--threads',
+             str(r['threads'])]
+    for x in r['set']:
+        first += ['--set', x]
+    return '%s, continued with %s' % (shlex.join(first + ['--out', out]), shlex.join(argv))
