@@ -207,27 +207,33 @@ def upper_bound(b):
     return min(r['v_impact_m_s'] for r in b['runs'])
 
 
+def bracket_columns(b):
+    """limit, bracket low and high (m/s) of a bracketed search, else None."""
+    return (b['limit_m_s'], *b['bracket_m_s']) if b.get('limit_m_s') is not None else None
+
+
+def estimate_columns(b):
+    e = recht_ipson_p2(b)
+    return (e,) if e else None
+
+
+def bound_columns(b):
+    u = upper_bound(b)
+    return (u,) if u else None
+
+
 data = os.path.join(out, 'limit_vs_spacing.dat')
 with open(data, 'w') as f:
-    for model in sorted({r[0] for r in rows}):
-        f.write('# %s\n' % model)
-        for m, s, b, wall in rows:
-            if m == model and b.get('limit_m_s') is not None:
-                lo, hi = b['bracket_m_s']
-                f.write('%.4f %.3f %.3f %.3f\n' % (s, b['limit_m_s'], lo, hi))
-        f.write('\n\n')
-    for model in sorted({r[0] for r in rows}):
-        f.write('# %s, Recht-Ipson p = 2 through the two slowest perforating runs\n' % model)
-        for m, s, b, wall in rows:
-            if m == model and recht_ipson_p2(b):
-                f.write('%.4f %.3f\n' % (s, recht_ipson_p2(b)))
-        f.write('\n\n')
-    for model in sorted({r[0] for r in rows}):
-        f.write('# %s, every run perforated: the slowest of them (the limit lies below)\n' % model)
-        for m, s, b, wall in rows:
-            if m == model and upper_bound(b):
-                f.write('%.4f %.3f\n' % (s, upper_bound(b)))
-        f.write('\n\n')
+    # Per kind of point, one gnuplot index block per model (the plot below counts them in this order).
+    for title, columns in (('%s', bracket_columns),
+                           ('%s, Recht-Ipson p = 2 through the two slowest perforating runs', estimate_columns),
+                           ('%s, every run perforated: the slowest of them (the limit lies below)', bound_columns)):
+        for model in sorted({r[0] for r in rows}):
+            f.write('# ' + title % model + '\n')
+            for m, s, b, wall in rows:
+                if m == model and columns(b):
+                    f.write(' '.join(['%.4f' % s] + ['%.3f' % v for v in columns(b)]) + '\n')
+            f.write('\n\n')
 models = sorted({r[0] for r in rows})
 plots = []
 if experiment:
