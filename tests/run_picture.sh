@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # cli.run_picture: a run draws picture.png (a PNG, with picture.gp and picture.dat to redraw it) when
 # gnuplot is there, says so in one warning line and still succeeds when it is not, and draws nothing with
-# output.picture = false; a body at two resolutions is drawn with both. The first part exits 77 (CTest: skipped) without gnuplot, after the others ran.
+# output.picture = false; a body at two resolutions is drawn with both. The first part exits 77 (CTest:
+# skipped) without gnuplot, after the others ran.
 #   run_picture.sh IMPACTSPH CASE OUT
 set -euo pipefail
 exe=$1 case=$2 out=$3
@@ -25,7 +26,7 @@ grep -q "^warning: picture.png not drawn: gnuplot is not installed" "$out/no-gnu
 env PATH=/nonexistent "$exe" run "$case" --spacing 2mm --set time.end=2us --set time.output_interval=1us \
   --set time.frame_interval=2us --set output.vtu=false --quiet --out "$out/rim" \
   --set 'plate.coarse={ratio=2, region="outside-cylinder", axis="z", axis_point=["0 mm","0 mm","0 mm"], radius="30 mm"}' \
-  2> /dev/null
+  2> "$out/rim.err" || { echo "the run with a coarse rim failed:"; cat "$out/rim.err"; exit 1; }
 rim=$(awk '!/^#/ && NF == 5 && $3 > 1.9 && ($1 > 30 || $1 < -30)' "$out/rim/picture.dat" | wc -l)
 (( rim > 0 )) || { echo "the coarse rim is missing from the cut ($out/rim/picture.dat)"; exit 1; }
 

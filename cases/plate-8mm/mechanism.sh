@@ -89,8 +89,9 @@ for s in spacings:
     for t, f in frames:
         a = read_vtu(os.path.join(run, f))
         series.append((float(t), frame_measures(a, multiplicity)))
-        if band is None and not math.isnan(failure_work(a)):
-            band = (float(t), band_width(a, radius)[0], failure_work(a))
+        w_fail = failure_work(a) if band is None else math.nan
+        if not math.isnan(w_fail):
+            band = (float(t), band_width(a, radius)[0], w_fail)
     bands.append(band)
     t_fail = first_time(rows_of(os.path.join(run, 'history_plate.csv')), 'damaged_mass_fraction')
     t_sep = first_time(rows_of(os.path.join(run, 'observables.csv')), 'plug_mass_g')
@@ -132,10 +133,18 @@ for s, summary, t_fail, m_fail, t_sep, m_sep in table:
         cell(share and 100 * share, '%.1f %%', None), 1e3 * o['plug_mass'], o['residual_velocity'],
         '%.0f us' % (1e6 * settled) if settled > 0 else 'not settled by %.0f us' % (1e6 * summary['simulated_time_s']),
         100 * summary['totals']['energy_drift_relative'], summary['wall_time_s']))
-material = tomllib.load(open('cases/materials/weldox-460e.toml', 'rb'))['damage']
+MATERIAL = 'cases/materials/weldox-460e.toml'
+material = tomllib.load(open(MATERIAL, 'rb')).get('damage', {})
+if material.get('kind') != 'fracture-energy':
+    sys.exit('mechanism: %s: damage.kind is "%s"; the band table needs "fracture-energy" (the crack band)'
+             % (MATERIAL, material.get('kind')))
 gamma_text = material['fracture_energy']
-value, unit = gamma_text.split()
-gamma = float(value) * {'J/m^2': 1.0, 'kJ/m^2': 1e3, 'MJ/m^2': 1e6}[unit]
+GAMMA_UNITS = {'J/m^2': 1.0, 'kJ/m^2': 1e3, 'MJ/m^2': 1e6}
+value, unit = (gamma_text.split() + [''])[:2]
+if unit not in GAMMA_UNITS:
+    sys.exit('mechanism: %s: damage.fracture_energy "%s": expected a number and one of %s'
+             % (MATERIAL, gamma_text, ', '.join(GAMMA_UNITS)))
+gamma = float(value) * GAMMA_UNITS[unit]
 k_band = material['band_width_factor']
 lines += ['', '## The band at the first failures', '',
           'The crack band assumes that the band which fails is k h0 wide at every spacing (k = %g, the material '
