@@ -50,6 +50,13 @@ def recht_ipson_p2_limit(points):
     return vb2 ** 0.5 if 0 < vb2 < v1 * v1 else None
 
 
+def repository_path(path):
+    """A case file's absolute path as run.json keeps it (on the machine of the run) -> its path from the
+    repository root (cases/...), the same wherever the report is regenerated."""
+    at = path.rfind('/cases/')
+    return path[at + 1:] if at >= 0 else os.path.relpath(path)
+
+
 def user_command(path):
     """The command that made a run, as a user types it: `build/impactsph` for the program, and for a run
     continued with --restart the first command rebuilt from its run.json (case, spacing, threads, sets)
@@ -61,8 +68,9 @@ def user_command(path):
         return shlex.join(argv)
     r = json.load(open(os.path.join(folder, 'run.json')))
     out = argv[argv.index('--restart') + 1]
-    first = ['build/impactsph', 'run', os.path.relpath(r['case_file']), '--spacing', r['spacing'], '--threads',
-             str(r['threads'])]
+    first = ['build/impactsph', 'run', repository_path(r['case_file'])]
+    first += ['--spacing', r['spacing']] if r['spacing'] else []  # empty: the case file's spacing
+    first += ['--threads', str(r['threads'])]
     for x in r['set']:
         first += ['--set', x]
     return '%s, continued with %s' % (shlex.join(first + ['--out', out]), shlex.join(argv))
