@@ -10,8 +10,7 @@ src=$1 scratch=$2 report=$3 script=$4
 shift 4
 rm -rf "$scratch" && mkdir -p "$scratch/$(dirname "$report")" "$scratch/$(dirname "$script")"
 cp -r "$src/$report" "$scratch/$report"
-cp "$src/$script" "$scratch/$script"
-[[ -f "$src/$(dirname "$script")/plate_runs.py" ]] && cp "$src/$(dirname "$script")/plate_runs.py" "$scratch/$(dirname "$script")/"
+cp "$src/$(dirname "$script")"/*.py "$scratch/$(dirname "$script")/"  # the script and the modules beside it
 rm "$scratch/$report/report.md"
 (cd "$scratch" && python3 "$script" "$@" > /dev/null)
 diff -u "$src/$report/report.md" "$scratch/$report/report.md" || { echo "$report/report.md is not what $script writes"; exit 1; }

@@ -24,8 +24,8 @@
 # "criterion spacing_mm from_m_s to_m_s tolerance_m_s" per line; none for the 12 mm plate), JOBS
 # (default 2). CALIBRATION may also name a ballistic.json (a committed copy). Runs made by hand that all
 # perforated give no limit: the slowest of them is drawn as a bound from above. A search whose
-# ballistic.json exists is not run again (delete its folder, or give RUNS a new name after changing the code). A 2 mm search of the 8 mm plate takes a few minutes on two cores, a
-# 1.333 mm one about half an hour; at 1 mm the calibration command of the material file is the search
+# ballistic.json exists is not run again (delete its folder, or give RUNS a new name after changing the
+# code). A 2 mm search of the 8 mm plate takes a few minutes on two cores, a 1.333 mm one about half an hour; at 1 mm the calibration command of the material file is the search
 # (about 25 minutes a round).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
