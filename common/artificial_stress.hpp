@@ -12,28 +12,41 @@
 // tensile limit, that form ran away on the Taylor bar (0.5 mm, epsilon 0.3, with and without the Monaghan
 // term): a particle in hydrostatic tension repels its neighbours, its density and internal energy fall,
 // the Grueneisen term Gamma rho e makes its pressure more tensile still (-45 GPa at 30 us), and the energy
-// grew tenfold. The default therefore takes the deviator of A (deviatoric = true): the shear that tears a
-// band or a foot apart, bounded by the yield stress, and nothing of the mean stress.
+// grew tenfold. The default therefore takes the deviator of A (Deviatoric): the shear that tears a band or a
+// foot apart, bounded by the yield stress, and nothing of the mean stress. That gives a third of Gray et
+// al.'s repulsion under equibiaxial tension T (the deviator's tensile values are T/3), where a plate's
+// stretched face breaks into columns (cases/plate-8mm/README.md). TotalBounded keeps the whole stress but
+// caps the mean tension that R sees at the von Mises stress of A (stress triaxiality at most 1):
+//   A' = dev(A) + min(tr(A)/3, sqrt(3/2 dev(A):dev(A))) I.
+// Shear (triaxiality 0), uniaxial (1/3) and equibiaxial tension (2/3) keep Gray et al.'s R; near-hydrostatic
+// tension, where the Grueneisen loop runs away, gets no more than its shear bounds, i.e. the yield stress.
 #pragma once
 #include "common/kernels.hpp"
 #include "common/tensor.hpp"
 
 namespace impactsph {
 
+// Which stress R is built from (the case file's numerics.artificial_stress_of).
+enum class ArtificialStressOf : int {
+  Deviatoric,    // "deviatoric": the deviator of A (the default)
+  Total,         // "total": A itself, Gray, Monaghan and Swift's form
+  TotalBounded,  // "total-bounded": A with its mean tension capped at its von Mises stress
+};
+
 template <class Real>
 struct ArtificialStressParams {
   Real epsilon = Real(0);         // Gray et al.'s epsilon, dimensionless; 0: off
   int exponent = 4;               // n, dimensionless
   Real inverse_w_spacing = Real(0);  // 1 / W(1 / h_factor, 1): the kernel at the spacing, for unit h
-  bool deviatoric = true;            // R from the deviator of A (true) or from A itself (Gray et al.)
+  ArtificialStressOf of = ArtificialStressOf::Deviatoric;  // which stress R is built from
   IMPACTSPH_HD bool on() const { return epsilon > Real(0); }
 };
 
 // Parameters for a kernel and a smoothing-length factor h / dp.
 template <class Real>
 ArtificialStressParams<Real> make_artificial_stress(Real epsilon, int exponent, KernelKind kernel, Real h_factor,
-                                                    bool deviatoric) {
-  return {epsilon, exponent, Real(1) / kernel_w(kernel, Real(1) / h_factor, Real(1)), deviatoric};
+                                                    ArtificialStressOf of) {
+  return {epsilon, exponent, Real(1) / kernel_w(kernel, Real(1) / h_factor, Real(1)), of};
 }
 
 // Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations (Golub and Van Loan, Matrix
@@ -72,13 +85,25 @@ IMPACTSPH_HD void symmetric_eigen(const Sym3<Real>& s, Real values[3], Mat3<Real
   values[2] = a.m[2][2];
 }
 
+// The stress R is built from, units of A: A, its deviator, or A with its mean tension capped at its von
+// Mises stress sqrt(3/2 s:s), s = dev(A).
+template <class Real>
+IMPACTSPH_HD Sym3<Real> artificial_stress_source(ArtificialStressOf of, const Sym3<Real>& A) {
+  if (of == ArtificialStressOf::Total) return A;
+  const Sym3<Real> s = deviator(A);
+  if (of == ArtificialStressOf::Deviatoric) return s;
+  const Real mean = A.trace() / Real(3), cap = von_mises(s);
+  const Real capped = mean < cap ? mean : cap;
+  return Sym3<Real>{s.xx + capped, s.yy + capped, s.zz + capped, s.xy, s.yz, s.zx};
+}
+
 // R_i from A_i = sigma_i / rho_i^2 (the stress with the pressure, before any artificial viscosity), units of
-// A. Zero where every principal stress is compressive.
+// A. Zero where every principal value of the source stress is compressive.
 template <class Real>
 IMPACTSPH_HD Sym3<Real> artificial_stress(const ArtificialStressParams<Real>& p, const Sym3<Real>& A) {
   Real s[3];
   Mat3<Real> V;
-  symmetric_eigen(p.deviatoric ? deviator(A) : A, s, V);
+  symmetric_eigen(artificial_stress_source(p.of, A), s, V);
   Mat3<Real> R = Mat3<Real>::zero();
   for (int a = 0; a < 3; ++a) {
     if (!(s[a] > Real(0))) continue;

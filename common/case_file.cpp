@@ -71,7 +71,10 @@ void read_numerics(const View& root, NumericsSpec& num) {
     n.fail("artificial_stress_exponent", "must be a whole number such as 4 (Gray, Monaghan and Swift 2001), got " +
                                              format_quantity(exponent, Dimension::Dimensionless));
   num.artificial_stress_exponent = static_cast<int>(exponent);
-  num.artificial_stress_deviatoric = n.choice("artificial_stress_of", {"deviatoric", "total"}, "deviatoric") == "deviatoric";
+  const std::string of = n.choice("artificial_stress_of", {"deviatoric", "total", "total-bounded"}, "deviatoric");
+  num.artificial_stress_of = of == "total"           ? ArtificialStressOf::Total
+                             : of == "total-bounded" ? ArtificialStressOf::TotalBounded
+                                                     : ArtificialStressOf::Deviatoric;
   num.delta = n.number_or("delta", 0.1);
   n.range("delta", num.delta, 0, 1, Dimension::Dimensionless);
   num.cfl = n.number_or("cfl", 0.2);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "common/artificial_stress.hpp"
 #include "common/correction.hpp"
 #include "common/kernels.hpp"
 #include "common/material.hpp"
@@ -108,7 +109,7 @@ struct NumericsSpec {
   BulkViscosityParams<double> bulk_viscosity{};  // volumetric viscosity in compression (viscosity.hpp); 0, 0: off
   double artificial_stress = 0;        // epsilon of the artificial stress (artificial_stress.hpp); 0: off
   int artificial_stress_exponent = 4;  // its n
-  bool artificial_stress_deviatoric = true;  // R from the tensile principal deviatoric stresses (false: total stress)
+  ArtificialStressOf artificial_stress_of = ArtificialStressOf::Deviatoric;  // which stress R is built from
   double delta = 0.1;          // delta-SPH coefficient (F Table 3)
   double cfl = 0.2;            // C_CFL of F eq 5.1
   CorrectionParams<double> correction{};

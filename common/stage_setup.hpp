@@ -33,7 +33,7 @@ StageParams<Real> make_stage_params(const Scene& scene) {
                                        static_cast<Real>(nu.bulk_viscosity.quadratic)};
   prm.bulk_on = nu.bulk_viscosity.linear > 0 || nu.bulk_viscosity.quadratic > 0;
   prm.art = make_artificial_stress(static_cast<Real>(nu.artificial_stress), nu.artificial_stress_exponent, nu.kernel,
-                                   static_cast<Real>(nu.h_factor), nu.artificial_stress_deviatoric);
+                                   static_cast<Real>(nu.h_factor), nu.artificial_stress_of);
   prm.body_count = static_cast<int>(scene.bodies.size());
   prm.plane_count = static_cast<int>(scene.spec.symmetry.size());
   prm.wall_planes = 0;

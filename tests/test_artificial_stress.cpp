@@ -65,7 +65,7 @@ TYPED_TEST(ArtificialStressTyped, EigenDecompositionReconstructs) {
 // Uniaxial tension sigma_xx = T > 0: R = -epsilon T e_x (x) e_x. Pure compression: R = 0.
 TYPED_TEST(ArtificialStressTyped, OnlyTensilePrincipalStressesRepel) {
   using Real = TypeParam;
-  const ArtificialStressParams<Real> p = make_artificial_stress<Real>(Real(0.3), 4, KernelKind::WendlandC2, Real(1.2), false);
+  const ArtificialStressParams<Real> p = make_artificial_stress<Real>(Real(0.3), 4, KernelKind::WendlandC2, Real(1.2), ArtificialStressOf::Total);
   const Sym3<Real> R = artificial_stress(p, Sym3<Real>{Real(2), Real(0), Real(0), 0, 0, 0});
   EXPECT_NEAR(R.xx, Real(-0.6), Real(1e-6));
   EXPECT_EQ(R.yy, Real(0));
@@ -84,7 +84,7 @@ TYPED_TEST(ArtificialStressTyped, OnlyTensilePrincipalStressesRepel) {
 // hydrostatic tension carries none and uniaxial tension T gives -epsilon (2T/3) e_x (x) e_x.
 TYPED_TEST(ArtificialStressTyped, DeviatoricFormIgnoresTheMeanStress) {
   using Real = TypeParam;
-  const ArtificialStressParams<Real> p = make_artificial_stress<Real>(Real(0.3), 4, KernelKind::WendlandC2, Real(1.2), true);
+  const ArtificialStressParams<Real> p = make_artificial_stress<Real>(Real(0.3), 4, KernelKind::WendlandC2, Real(1.2), ArtificialStressOf::Deviatoric);
   const Sym3<Real> hydrostatic = artificial_stress(p, Sym3<Real>{Real(2), Real(2), Real(2), 0, 0, 0});
   EXPECT_EQ(ddot(hydrostatic, hydrostatic), Real(0));
   const Sym3<Real> R = artificial_stress(p, Sym3<Real>{Real(3), Real(0), Real(0), 0, 0, 0});
@@ -97,10 +97,43 @@ TYPED_TEST(ArtificialStressTyped, DeviatoricFormIgnoresTheMeanStress) {
   EXPECT_LT(max_abs_difference(artificial_stress(p, shear).full(), artificial_stress(p, pressed).full()), Real(1e-5));
 }
 
+// The bounded whole-stress form: Gray et al.'s R wherever the mean tension is at most the von Mises stress
+// (shear, uniaxial and equibiaxial tension), and no more than the shear allows in hydrostatic tension.
+TYPED_TEST(ArtificialStressTyped, BoundedFormCapsOnlyTheMeanTension) {
+  using Real = TypeParam;
+  const auto make = [](ArtificialStressOf of) {
+    return make_artificial_stress<Real>(Real(0.3), 4, KernelKind::WendlandC2, Real(1.2), of);
+  };
+  const ArtificialStressParams<Real> total = make(ArtificialStressOf::Total), bounded = make(ArtificialStressOf::TotalBounded);
+  const Real tol = sizeof(Real) == 4 ? Real(2e-5) : Real(1e-12);
+  // Equibiaxial tension T (triaxiality 2/3): the whole-stress R, -epsilon T on both stretched axes, three
+  // times the deviatoric form's.
+  const Sym3<Real> biaxial{Real(3), Real(3), Real(0), 0, 0, 0};
+  const Sym3<Real> R = artificial_stress(bounded, biaxial);
+  EXPECT_LT(max_abs_difference(R.full(), artificial_stress(total, biaxial).full()), tol);
+  EXPECT_NEAR(R.xx, Real(-0.9), Real(1e-5));
+  EXPECT_NEAR(R.yy, Real(-0.9), Real(1e-5));
+  EXPECT_NEAR(R.zz, Real(0), Real(1e-5));
+  EXPECT_NEAR(artificial_stress(make(ArtificialStressOf::Deviatoric), biaxial).xx, Real(-0.3), Real(1e-5));
+  // Uniaxial tension and a mixed state with compression: unchanged.
+  for (const Sym3<Real>& A : {Sym3<Real>{Real(3), 0, 0, 0, 0, 0},
+                              Sym3<Real>{Real(0.5), Real(-2), Real(0.1), Real(0.7), Real(0.2), Real(-0.4)}})
+    EXPECT_LT(max_abs_difference(artificial_stress(bounded, A).full(), artificial_stress(total, A).full()), tol);
+  // Hydrostatic tension: none (its von Mises stress is zero), where the whole-stress form repels.
+  const Sym3<Real> hydrostatic{Real(2), Real(2), Real(2), 0, 0, 0};
+  EXPECT_EQ(ddot(artificial_stress(bounded, hydrostatic), artificial_stress(bounded, hydrostatic)), Real(0));
+  EXPECT_NEAR(artificial_stress(total, hydrostatic).xx, Real(-0.6), Real(1e-5));
+  // Uniaxial strain in tension (principal 1, 0.49, 0.49: triaxiality 1.30): the mean is cut to the von
+  // Mises stress 0.51, so the largest principal value is 0.34 + 0.51 and R_xx = -0.3 x 0.85.
+  const Sym3<Real> strain{Real(1), Real(0.49), Real(0.49), 0, 0, 0};
+  EXPECT_NEAR(artificial_stress(bounded, strain).xx, Real(-0.3) * Real(0.34 + 0.51), Real(1e-5));
+  EXPECT_NEAR(artificial_stress(bounded, strain).yy, Real(-0.3) * Real(-0.17 + 0.51), Real(1e-5));
+}
+
 // Objectivity: R of a rotated stress is the rotated R.
 TYPED_TEST(ArtificialStressTyped, RotatesWithTheStress) {
   using Real = TypeParam;
-  const ArtificialStressParams<Real> p = make_artificial_stress<Real>(Real(0.3), 4, KernelKind::WendlandC2, Real(1.2), false);
+  const ArtificialStressParams<Real> p = make_artificial_stress<Real>(Real(0.3), 4, KernelKind::WendlandC2, Real(1.2), ArtificialStressOf::Total);
   const Sym3<Real> A{Real(1.5), Real(-0.4), Real(0.7), Real(0.9), Real(-0.3), Real(0.2)};
   const Mat3<Real> Q = rotation<Real>(Real(-0.8), Real(0.5), Real(2.0));
   const Mat3<Real> rotated_R = Q * artificial_stress(p, A).full() * Q.transpose();
@@ -114,14 +147,14 @@ TYPED_TEST(ArtificialStressTyped, PairFactorIsOneAtTheSpacing) {
   using Real = TypeParam;
   for (KernelKind k : {KernelKind::WendlandC2, KernelKind::CubicSpline}) {
     const Real h_factor = Real(1.2), h = Real(1.3e-3), dp = h / h_factor;
-    const ArtificialStressParams<Real> p = make_artificial_stress<Real>(Real(0.3), 4, k, h_factor, false);
+    const ArtificialStressParams<Real> p = make_artificial_stress<Real>(Real(0.3), 4, k, h_factor, ArtificialStressOf::Total);
     EXPECT_NEAR(artificial_stress_pair_factor(p, k, dp, h), Real(1), Real(1e-5));
     EXPECT_GT(artificial_stress_pair_factor(p, k, Real(0.8) * dp, h), Real(1));
     EXPECT_LT(artificial_stress_pair_factor(p, k, Real(1.2) * dp, h), Real(1));
     EXPECT_EQ(artificial_stress_pair_factor(p, k, Real(2.01) * h, h), Real(0));
-    const Real f1 = make_artificial_stress<Real>(Real(0.3), 1, k, h_factor, false).inverse_w_spacing * kernel_w(k, Real(1.5) * dp / h, Real(1));
+    const Real f1 = make_artificial_stress<Real>(Real(0.3), 1, k, h_factor, ArtificialStressOf::Total).inverse_w_spacing * kernel_w(k, Real(1.5) * dp / h, Real(1));
     EXPECT_NEAR(artificial_stress_pair_factor(p, k, Real(1.5) * dp, h), f1 * f1 * f1 * f1, Real(1e-6));
-    const ArtificialStressParams<Real> off = make_artificial_stress<Real>(Real(0), 4, k, h_factor, false);
+    const ArtificialStressParams<Real> off = make_artificial_stress<Real>(Real(0), 4, k, h_factor, ArtificialStressOf::Total);
     EXPECT_EQ(artificial_stress_pair_factor(off, k, Real(0.8) * dp, h), Real(0));  // off: no pair term
   }
 }
@@ -130,7 +163,7 @@ TYPED_TEST(ArtificialStressTyped, PairFactorIsOneAtTheSpacing) {
 // is what the two internal energies lose (m_i de_i + m_j de_j + m_i a_i.v_i + m_j a_j.v_j = 0).
 TEST(ArtificialStressPair, EqualOppositeAndEnergyConserving) {
   const double rho = 7850, h = 1.2e-3, mi = 7.85e-3, mj = 8.2e-3;
-  const ArtificialStressParams<double> p = make_artificial_stress(0.3, 4, KernelKind::WendlandC2, 1.2, false);
+  const ArtificialStressParams<double> p = make_artificial_stress(0.3, 4, KernelKind::WendlandC2, 1.2, ArtificialStressOf::Total);
   const Sym3<double> Ai{3e8 / (rho * rho), -1e8 / (rho * rho), 5e7 / (rho * rho), 1e8 / (rho * rho), 0, 2e7 / (rho * rho)};
   const Sym3<double> Aj{1e8 / (rho * rho), 2e8 / (rho * rho), -3e8 / (rho * rho), 0, 4e7 / (rho * rho), 0};
   const PairSide<double> i{Ai.full(), Mat3<double>::identity(), 0.0, 1, 5000, rho, false, artificial_stress(p, Ai).full()};
@@ -157,7 +190,7 @@ TEST(ArtificialStressPair, EqualOppositeAndEnergyConserving) {
 // Off (stress_factor 0) gives the bits of a pair without R; a crack-face pair carries none of it.
 TEST(ArtificialStressPair, OffAndAtCrackFacesLeavesThePairAlone) {
   const double rho = 7850, h = 1.2e-3, m = 7.85e-3;
-  const ArtificialStressParams<double> p = make_artificial_stress(0.3, 4, KernelKind::WendlandC2, 1.2, false);
+  const ArtificialStressParams<double> p = make_artificial_stress(0.3, 4, KernelKind::WendlandC2, 1.2, ArtificialStressOf::Total);
   const Sym3<double> A{3e8 / (rho * rho), -1e8 / (rho * rho), 5e7 / (rho * rho), 1e8 / (rho * rho), 0, 0};
   const PairSide<double> bare{A.full(), Mat3<double>::identity(), 0.0, 1, 5000, rho, false, Mat3<double>::zero()};
   const PairSide<double> with_r{A.full(), Mat3<double>::identity(), 0.0, 1, 5000, rho, false, artificial_stress(p, A).full()};

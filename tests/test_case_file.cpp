@@ -124,8 +124,11 @@ axis = "y"
   EXPECT_FALSE(parse_case_string(toml, "case.toml").numerics.viscosity.limited);  // off by default
   EXPECT_DOUBLE_EQ(s.numerics.artificial_stress, 0.3);
   EXPECT_EQ(s.numerics.artificial_stress_exponent, 6);
-  EXPECT_FALSE(s.numerics.artificial_stress_deviatoric);
-  EXPECT_TRUE(parse_case_string(toml, "case.toml").numerics.artificial_stress_deviatoric);
+  EXPECT_EQ(s.numerics.artificial_stress_of, impactsph::ArtificialStressOf::Total);
+  EXPECT_EQ(parse_case_string(toml, "case.toml").numerics.artificial_stress_of, impactsph::ArtificialStressOf::Deviatoric);
+  EXPECT_EQ(parse_case_string(with("spacing = \"0.5 mm\"", "spacing = \"0.5 mm\"\nartificial_stress = 0.3\nartificial_stress_of = \"total-bounded\"", toml),
+                              "case.toml").numerics.artificial_stress_of,
+            impactsph::ArtificialStressOf::TotalBounded);
   EXPECT_DOUBLE_EQ(parse_case_string(toml, "case.toml").numerics.artificial_stress, 0);  // off by default
   EXPECT_EQ(parse_case_string(toml, "case.toml").numerics.artificial_stress_exponent, 4);
   EXPECT_FALSE(s.output.vtu);

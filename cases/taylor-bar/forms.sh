@@ -59,6 +59,10 @@ PLAIN="--set numerics.viscosity_limiter=none"
 LIM="--set numerics.viscosity_limiter=van-leer"
 NO_MONAGHAN="--set numerics.viscosity_linear=0 --set numerics.viscosity_quadratic=0"
 H12="--set numerics.h_factor=1.2"
+# The artificial stress from the whole stress (Gray et al.) and from the whole stress with its mean tension
+# capped at the von Mises stress (common/artificial_stress.hpp); the -as forms without either take the deviator.
+TOTAL="--set numerics.artificial_stress_of=total"
+BOUNDED="--set numerics.artificial_stress_of=total-bounded"
 FORMS="monaghan|$PLAIN $H12
 bulk|$PLAIN $NO_MONAGHAN $BULK $H12
 bulk-balsara|$PLAIN --set numerics.viscosity_balsara=true $BULK $H12
@@ -73,7 +77,12 @@ limited-h20|$LIM --set numerics.h_factor=2.0
 bulk-h16|$PLAIN $NO_MONAGHAN $BULK --set numerics.h_factor=1.6
 bulk-h20|$PLAIN $NO_MONAGHAN $BULK --set numerics.h_factor=2.0
 monaghan-as|$PLAIN --set numerics.artificial_stress=0.3 $H12
-bulk-as|$PLAIN $NO_MONAGHAN $BULK --set numerics.artificial_stress=0.3 $H12"
+bulk-as|$PLAIN $NO_MONAGHAN $BULK --set numerics.artificial_stress=0.3 $H12
+monaghan-as-total|$PLAIN --set numerics.artificial_stress=0.3 $TOTAL $H12
+monaghan-as-bounded|$PLAIN --set numerics.artificial_stress=0.3 $BOUNDED $H12
+limited-h20-as|$LIM --set numerics.artificial_stress=0.3 --set numerics.h_factor=2.0
+limited-h20-as-total|$LIM --set numerics.artificial_stress=0.3 $TOTAL --set numerics.h_factor=2.0
+limited-h20-as-bounded|$LIM --set numerics.artificial_stress=0.3 $BOUNDED --set numerics.h_factor=2.0"
 if [[ -n "${FORM_NAMES:-}" ]]; then
   FORMS=$(while IFS='|' read -r form sets; do
             if [[ " $FORM_NAMES " == *" $form "* ]]; then echo "$form|$sets"; fi
