@@ -22,7 +22,9 @@
 # that held and the lowest that perforated), SEARCH_FILES (searches made before, "model:PATH" per word,
 # PATH a ballistic.json: the 12 mm plate's default is its committed reports), SEARCHES (default below:
 # "criterion spacing_mm from_m_s to_m_s tolerance_m_s" per line; none for the 12 mm plate), JOBS
-# (default 2). CALIBRATION may also name a ballistic.json (a committed copy). Runs made by hand that all
+# (default 2), EXTRA_SETS (overrides given to every search, one KEY=VALUE per line, e.g. another
+# artificial stress form or fracture energy; each search's command line in the report shows them).
+# CALIBRATION may also name a ballistic.json (a committed copy). Runs made by hand that all
 # perforated give no limit: the slowest of them is drawn as a bound from above. A search whose
 # ballistic.json exists is not run again (delete its folder, or give RUNS a new name after changing the
 # code). A 2 mm search of the 8 mm plate takes a few minutes on two cores, a 1.333 mm one about half an hour; at 1 mm the calibration command of the material file is the search
@@ -68,6 +70,9 @@ if [[ -z "${REPORT_ONLY:-}" ]]; then
     [[ "${model%-as}" == "critical-strain" ]] && extra=(--set "$F49")
     [[ "${model%-as}" == "no-damage" ]] && extra=(--set "$NO_DAMAGE")
     [[ "$model" == *-as ]] && extra+=(--set "$ARTIFICIAL_STRESS")
+    while IFS= read -r override; do
+      [[ -n "$override" ]] && extra+=(--set "$override")
+    done <<< "${EXTRA_SETS:-}"
     echo "limit-vs-spacing: $model at $spacing mm, $from to $to m/s"
     "$EXE" ballistic-limit "$CASE" --spacing "${spacing}mm" --from "$from" --to "$to" --tolerance "$tol" \
       --jobs "$JOBS" --quiet --set output.vtu=false "${extra[@]}" --out "$dir" > "$dir.log" 2>&1 ||
@@ -78,6 +83,7 @@ fi
 COMMAND="bash cases/plate-8mm/limit-vs-spacing.sh"
 [[ "$PLATE" != plate-8mm ]] && COMMAND="PLATE=$PLATE $COMMAND"
 [[ "$OUT" != "cases/$PLATE/report-limit-vs-spacing" ]] && COMMAND="OUT=$OUT RUNS=$RUNS SEARCHES=... $COMMAND"
+[[ -n "${EXTRA_SETS:-}" ]] && COMMAND="EXTRA_SETS=... $COMMAND"
 [[ -n "${BRACKET_RUNS:-}" ]] && COMMAND="BRACKET_RUNS=\"$BRACKET_RUNS\" $COMMAND"
 [[ "$PLATE" == plate-8mm && -n "${SEARCH_FILES:-}" ]] && COMMAND="SEARCH_FILES=\"$(echo $SEARCH_FILES)\" $COMMAND"
 [[ "$CALIBRATION" == *.json ]] && COMMAND="CALIBRATION=$CALIBRATION $COMMAND"
