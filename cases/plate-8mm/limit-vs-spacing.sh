@@ -24,7 +24,7 @@
 # "criterion spacing_mm from_m_s to_m_s tolerance_m_s" per line; none for the 12 mm plate), JOBS
 # (default 2), EXTRA_SETS (overrides given to every search, one KEY=VALUE per line, e.g. another
 # artificial stress form or fracture energy; each search's command line in the report shows them).
-# CALIBRATION may also name a ballistic.json (a committed copy). Runs made by hand that all
+# CALIBRATION may also name ballistic.json files (committed copies; a glob such as DIR/calibration-*.json). Runs made by hand that all
 # perforated give no limit: the slowest of them is drawn as a bound from above. A search whose
 # ballistic.json exists is not run again (delete its folder, or give RUNS a new name after changing the
 # code). A 2 mm search of the 8 mm plate takes a few minutes on two cores, a 1.333 mm one about half an hour; at 1 mm the calibration command of the material file is the search
@@ -192,7 +192,7 @@ lines += ['', 'Searches:', '']
 for model, s, b, wall in rows:
     cl = b['command_line'] if isinstance(b['command_line'], str) else shlex.join(b['command_line'])
     lines.append('- %s at %.3g mm: `%s`%s' % (model, s, cl, ' (report: %s)' % b['report'] if 'report' in b else ''))
-if calibration.endswith('.json') and not os.path.isfile(calibration):
+if calibration.endswith('.json') and not glob.glob(calibration):
     sys.exit('limit-vs-spacing: CALIBRATION=%s: no such file (a ballistic.json, or folders holding one)' % calibration)
 cal = sorted(glob.glob(calibration if calibration.endswith('.json') else os.path.join(calibration, 'ballistic.json')))
 if cal:
