@@ -23,12 +23,12 @@
 # PATH a ballistic.json: the 12 mm plate's default is its committed reports), SEARCHES (default below:
 # "criterion spacing_mm from_m_s to_m_s tolerance_m_s" per line; none for the 12 mm plate), JOBS
 # (default 2), EXTRA_SETS (overrides given to every search, one KEY=VALUE per line, e.g. another
-# artificial stress form or fracture energy; each search's command line in the report shows them).
-# CALIBRATION may also name ballistic.json files (committed copies; a glob such as DIR/calibration-*.json). Runs made by hand that all
-# perforated give no limit: the slowest of them is drawn as a bound from above. A search whose
+# artificial stress form or fracture energy; the report names them). CALIBRATION may also name
+# ballistic.json files (committed copies; a glob such as DIR/calibration-*.json). Runs made by hand that
+# all perforated give no limit: the slowest of them is drawn as a bound from above. A search whose
 # ballistic.json exists is not run again (delete its folder, or give RUNS a new name after changing the
-# code). A 2 mm search of the 8 mm plate takes a few minutes on two cores, a 1.333 mm one about half an hour; at 1 mm the calibration command of the material file is the search
-# (about 25 minutes a round).
+# code). A 2 mm search of the 8 mm plate takes a few minutes on two cores, a 1.333 mm one about half an
+# hour; at 1 mm the calibration command of the material file is the search (about 25 minutes a round).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${BUILD_DIR:-build}
@@ -166,6 +166,10 @@ lines = ['# %s plate: the ballistic limit against the spacing' % title_plate, ''
          '| criterion | spacing | limit | bracket | %s | Recht-Ipson p = 2 through the two slowest perforating runs | runs | wall s (sum of runs) |',
          '|---|---|---|---|---|---|---|---|']
 lines[-2] = lines[-2] % against
+extra_sets = [x for x in os.environ.get('EXTRA_SETS', '').splitlines() if x.strip()]
+if extra_sets:
+    lines[2] += (' Every search of this report ran with these overrides on top of the case and material files '
+                 '(EXTRA_SETS), so its figures are not the case file\'s: %s.' % ', '.join('`%s`' % x for x in extra_sets))
 def relative(v):
     return '%+.1f %%' % (100 * (v / experiment - 1)) if experiment else ''
 def estimate_cell(b):
@@ -193,7 +197,8 @@ for model, s, b, wall in rows:
     cl = b['command_line'] if isinstance(b['command_line'], str) else shlex.join(b['command_line'])
     lines.append('- %s at %.3g mm: `%s`%s' % (model, s, cl, ' (report: %s)' % b['report'] if 'report' in b else ''))
 if calibration.endswith('.json') and not glob.glob(calibration):
-    sys.exit('limit-vs-spacing: CALIBRATION=%s: no such file (a ballistic.json, or folders holding one)' % calibration)
+    sys.exit('limit-vs-spacing: CALIBRATION=%s: no such file (a ballistic.json or a glob of them, or folders '
+             'holding one)' % calibration)
 cal = sorted(glob.glob(calibration if calibration.endswith('.json') else os.path.join(calibration, 'ballistic.json')))
 if cal:
     lines += ['', 'The calibration command of cases/materials/weldox-460e.toml (1 mm, 149.5 and 155.5 m/s) at the '
@@ -201,9 +206,9 @@ if cal:
               '| overrides | status | runs (impact speed: perforated, residual velocity, plug, wall) |', '|---|---|---|']
     for path in cal:
         b = json.load(open(path))
-        items = ['%.2f: %s, %.1f m/s, %.1f g, %.0f s' % (r['v_impact_m_s'], 'yes' if r.get('perforated') else 'no',
-                                                        r.get('residual_velocity_m_s', float('nan')),
-                                                        1e3 * r.get('plug_mass_kg', float('nan')), r['wall_s'])
+        items = ['%.2f: %s, %.0f s' % (r['v_impact_m_s'], r['error'], r['wall_s']) if 'error' in r else
+                 '%.2f: %s, %.1f m/s, %.1f g, %.0f s' % (r['v_impact_m_s'], 'yes' if r.get('perforated') else 'no',
+                                                        r['residual_velocity_m_s'], 1e3 * r['plug_mass_kg'], r['wall_s'])
                  for r in b['runs'] if 'v_impact_m_s' in r]
         lines.append('| %s | %s | %s |' % (', '.join('`%s`' % x for x in b['set']), b['status'], '; '.join(items)))
 open(os.path.join(out, 'report.md'), 'w').write('\n'.join(lines) + '\n')
