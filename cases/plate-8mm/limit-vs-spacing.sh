@@ -168,8 +168,9 @@ lines = ['# %s plate: the ballistic limit against the spacing' % title_plate, ''
 lines[-2] = lines[-2] % against
 extra_sets = [x for x in os.environ.get('EXTRA_SETS', '').splitlines() if x.strip()]
 if extra_sets:
-    lines[2] += (' Every search of this report ran with these overrides on top of the case and material files '
-                 '(EXTRA_SETS), so its figures are not the case file\'s: %s.' % ', '.join('`%s`' % x for x in extra_sets))
+    lines[2] += (' Every search of this report ran with these overrides on top of the case and material files of '
+                 'its time (EXTRA_SETS), so its figures are the case file\'s only where the case and material files '
+                 'hold the same values: %s.' % ', '.join('`%s`' % x for x in extra_sets))
 def relative(v):
     return '%+.1f %%' % (100 * (v / experiment - 1)) if experiment else ''
 def estimate_cell(b):
