@@ -41,6 +41,7 @@ OUT=${OUT:-cases/$PLATE/report-limit-vs-spacing}
 ARTIFICIAL_STRESS='numerics.artificial_stress=0.3'
 F49='weldox-460e.damage={ kind = "critical-plastic-strain", critical_plastic_strain = 0.3 }'
 NO_DAMAGE='weldox-460e.damage={ kind = "none" }'
+SEARCH_FILES_GIVEN=${SEARCH_FILES+given}   # the caller named the searches (the report's command then names them)
 if [[ "$PLATE" == plate-8mm ]]; then
   RUNS=${RUNS:-runs/limit-vs-spacing}
   SEARCHES=${SEARCHES-"fracture-energy 2 100 190 3
@@ -85,7 +86,7 @@ COMMAND="bash cases/plate-8mm/limit-vs-spacing.sh"
 [[ "$OUT" != "cases/$PLATE/report-limit-vs-spacing" ]] && COMMAND="OUT=$OUT RUNS=$RUNS SEARCHES=... $COMMAND"
 [[ -n "${EXTRA_SETS:-}" ]] && COMMAND="EXTRA_SETS=... $COMMAND"
 [[ -n "${BRACKET_RUNS:-}" ]] && COMMAND="BRACKET_RUNS=\"$BRACKET_RUNS\" $COMMAND"
-[[ "$PLATE" == plate-8mm && -n "${SEARCH_FILES:-}" ]] && COMMAND="SEARCH_FILES=\"$(echo $SEARCH_FILES)\" $COMMAND"
+[[ -n "$SEARCH_FILES_GIVEN" && -n "${SEARCH_FILES:-}" ]] && COMMAND="SEARCH_FILES=\"$(echo $SEARCH_FILES)\" $COMMAND"
 [[ "$CALIBRATION" == *.json ]] && COMMAND="CALIBRATION=$CALIBRATION $COMMAND"
 [[ -n "${REPORT_ONLY:-}" ]] && COMMAND="REPORT_ONLY=1 $COMMAND"
 COMMAND="$COMMAND" SEARCH_FILES="${SEARCH_FILES:-}" python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" \
