@@ -15,12 +15,13 @@ constexpr double kFailedDamage = 0.99;
 // Damage increment of one step of the material's damage model (common/models/), to be added to D (the
 // caller keeps D = min(D + increment, 1)): d_eps_p the plastic strain increment, eps_p_after and w_p_after
 // (J/kg) the plastic strain and work after the step, P and sigma_eq (Pa) the pressure and the von Mises
-// stress, eps_rate (1/s) and T (K). Dimensionless. None: 0; no damage without plastic flow (d_eps_p <= 0)
-// except in the critical-plastic-strain model.
+// stress, eps_rate (1/s) and T (K), and the non-local plastic work density nonlocal_work (J/m^3) where
+// damage_uses_nonlocal_work. Dimensionless. None: 0; no damage without plastic flow (d_eps_p <= 0) except in
+// the critical-plastic-strain model.
 template <class Real>
 IMPACTSPH_HD Real damage_increment(const MaterialParams<Real>& m, Real d_eps_p, Real eps_p_after, Real w_p_after, Real P,
-                                   Real sigma_eq, Real eps_rate, Real T) {
-  const DamageStep<Real> step{d_eps_p, eps_p_after, w_p_after, P, sigma_eq, eps_rate, T};
+                                   Real sigma_eq, Real eps_rate, Real T, Real nonlocal_work = Real(0)) {
+  const DamageStep<Real> step{d_eps_p, eps_p_after, w_p_after, P, sigma_eq, eps_rate, T, nonlocal_work};
   return with_damage_model(m.damage.kind, [&](auto model) { return decltype(model)::increment(m, step); });
 }
 
@@ -47,6 +48,23 @@ IMPACTSPH_HD Real damage_added_pressure(const MaterialParams<Real>& m, Real rho,
 // fracture-energy criterion. The scene calls it once per material (host only).
 inline void set_damage_smoothing_length(DamageParams<double>& d, double h0) {
   with_damage_model(d.kind, [&](auto model) { decltype(model)::set_smoothing_length(d, h0); });
+}
+
+// The radius R (m) over which a material's damage model averages the plastic work (common/nonlocal.hpp);
+// 0 for a local model.
+template <class Real> IMPACTSPH_HD Real damage_nonlocal_radius(const MaterialParams<Real>& m) {
+  return m.damage.kind == DamageKind::FractureEnergy ? m.damage.fracture_energy.nonlocal_radius : Real(0);
+}
+
+// Whether the solvers must form the non-local plastic work density of a particle for its damage increment
+// this step: its material averages (damage_nonlocal_radius > 0), it is intact, it flowed plastically
+// (d_eps_p > 0), and its own plastic work density rho0 w_p (J/m^3; w_p in J/kg after the step) reached the
+// critical work, without which the model does not fail it (damage_fracture_energy.hpp). Only the particles
+// at the crack tip pass, so the average costs little.
+template <class Real>
+IMPACTSPH_HD bool damage_uses_nonlocal_work(const MaterialParams<Real>& m, Real D, Real d_eps_p, Real w_p_after) {
+  return damage_nonlocal_radius(m) > Real(0) && D < Real(1) && d_eps_p > Real(0) &&
+         m.eos.rho0 * w_p_after >= m.damage.fracture_energy.critical_work;
 }
 
 // Damage a particle brings into the pair factor below: its D when its material scales pairs (F eq 4.10),

@@ -95,11 +95,13 @@ IMPACTSPH_HD PlasticResult<Real> trial_plastic_return(const MaterialParams<Real>
 // per unit mass (J/kg) and the heating of the final stage, recompute the pressure (Pa) from the EOS and the bulking increment dP_bulk, bound it as
 // the material carries it at its damage (apply_failure), add the damage increment (D capped at 1), grow
 // what the damage model adds to the pressure (the JH-2 bulking: the strength lost becomes pressure),
-// and strip a failed particle of what it no longer carries. strain_rate in 1/s.
+// and strip a failed particle of what it no longer carries. strain_rate in 1/s; nonlocal_work (J/m^3) the
+// non-local plastic work density after the step where damage_uses_nonlocal_work (common/nonlocal.hpp).
 template <class Real>
 IMPACTSPH_HD void finish_step(const MaterialParams<Real>& mat, Real rho, Real energy, Sym3<Real>& S, Real& plastic_strain,
                               Real& plastic_work, Real& temperature, Real& damage, Real& pressure, Real& dP_bulk,
-                              Real d_eps_p, Real d_plastic_work, Real d_temperature, Real strain_rate) {
+                              Real d_eps_p, Real d_plastic_work, Real d_temperature, Real strain_rate,
+                              Real nonlocal_work = Real(0)) {
   plastic_strain += d_eps_p;
   plastic_work += d_plastic_work;
   temperature += d_temperature;
@@ -108,7 +110,8 @@ IMPACTSPH_HD void finish_step(const MaterialParams<Real>& mat, Real rho, Real en
   apply_failure(mat, S, pressure, damage);
   if (damage < Real(1)) {
     const Real d_old = damage;
-    const Real dd = damage_increment(mat, d_eps_p, plastic_strain, plastic_work, pressure, von_mises(S), strain_rate, temperature);
+    const Real dd = damage_increment(mat, d_eps_p, plastic_strain, plastic_work, pressure, von_mises(S), strain_rate,
+                                     temperature, nonlocal_work);
     const Real d = damage + dd;
     damage = d < Real(1) ? d : Real(1);
     const Real bulking = damage_added_pressure(mat, rho, pressure, d_old, damage, strain_rate, dP_bulk);

@@ -380,15 +380,16 @@ IMPACTSPH_HD PlasticResult<Real> advance_point(const StageParams<Real>& prm, con
 
 // History variables of the final stage (plastic strain, heating, pressure, damage, bulking: F 4.7-4.9,
 // X eq 28; finish_step) and the variable smoothing length (X eqs 9-10: dh/dt = (1/3) h div v within the
-// body's bounds) from the velocity gradient of the last evaluation.
+// body's bounds) from the velocity gradient of the last evaluation. nonlocal_work (J/m^3): the particle's
+// non-local plastic work density after the step where damage_uses_nonlocal_work, else 0.
 template <class Real>
 IMPACTSPH_HD void finish_point(const MaterialParams<Real>& mat, const BodySmoothing<Real>& smoothing,
                                const Mat3<Real>& grad_v, Real dt, Real rho, Real energy, Sym3<Real>& S,
                                Real& plastic_strain, Real& plastic_work, Real& temperature, Real& damage,
                                Real& pressure, Real& bulking, Real& h, Real d_eps_p, Real d_plastic_work, Real d_T,
-                               Real strain_rate) {
+                               Real strain_rate, Real nonlocal_work) {
   finish_step(mat, rho, energy, S, plastic_strain, plastic_work, temperature, damage, pressure, bulking, d_eps_p,
-              d_plastic_work, d_T, strain_rate);
+              d_plastic_work, d_T, strain_rate, nonlocal_work);
   if (smoothing.variable) h = advance_smoothing_length(h, grad_v.trace(), dt, smoothing.h_lo, smoothing.h_hi);
 }
 

@@ -37,6 +37,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/nonlocal.hpp"
 #include "common/stage_setup.hpp"
 #include "common/stages.hpp"
 #include "common/verlet.hpp"
@@ -72,6 +73,7 @@ class Solver final : public GpuStepper {
     const std::vector<BodySmoothing<Real>> smoothing = make_body_smoothing<Real>(scene);
     for (const BodySmoothing<Real>& b : smoothing) variable_h_ = variable_h_ || b.variable;
     body_smoothing_ = smoothing;
+    upload_nonlocal_grid(build_nonlocal_grid(scene.particles, scene.materials));
   }
 
   std::string name() const override { return name_; }
@@ -171,9 +173,31 @@ class Solver final : public GpuStepper {
                           &d_temperature_, &history_rate_, &scratch_real_})
       a->resize(n);
     rate_pos_.resize(n); rate_acc_.resize(n); rate_S_.resize(n); grad_v_.resize(n);
-    fallback_.resize(n); neighbour_count_.resize(n); pos_at_sort_.resize(n);
+    fallback_.resize(n); neighbour_count_.resize(n); pos_at_sort_.resize(n); nonlocal_work_.resize(n);
     sorted_ = false;
     resident_ = true;
+  }
+
+  // The grid of the non-local plastic work (common/nonlocal.hpp) on the device, in the scene's order: the
+  // initial configuration of the scene this solver was made from (before a checkpoint replaces it).
+  void upload_nonlocal_grid(const NonlocalGridData& g) {
+    nonlocal_ = !g.empty();
+    if (!nonlocal_) return;
+    nonlocal_grid_ = NonlocalGrid<Real>{g.origin, g.cell, g.nx, g.ny, g.nz};
+    nl_cell_start_ = g.cell_start;
+    nl_particle_ = g.particle;
+    nl_body_ = g.body;
+    nl_entry_of_ = g.entry_of;
+    nl_position_ = g.position;
+    std::vector<Real> volume(g.volume.begin(), g.volume.end());
+    nl_volume_ = volume;
+    nonlocal_grid_.cell_start = raw(nl_cell_start_);
+    nonlocal_grid_.particle = raw(nl_particle_);
+    nonlocal_grid_.body = raw(nl_body_);
+    nonlocal_grid_.entry_of = raw(nl_entry_of_);
+    nonlocal_grid_.position = raw(nl_position_);
+    nonlocal_grid_.volume = raw(nl_volume_);
+    work_scene_.resize(g.entry_of.size());
   }
 
   // Search radius without the skin: the kernel support or the contact distance at the largest h (m).
@@ -328,9 +352,30 @@ class Solver final : public GpuStepper {
     const Real* h_work = raw(d_plastic_work_);
     const Real* h_T = raw(d_temperature_);
     const Real* h_rate = raw(history_rate_);
+    Real* nonlocal = raw(nonlocal_work_);
+    const bool averages = nonlocal_;
+    if (averages) {
+      // The non-local plastic work of the particles that may fail on it this step, from every particle's
+      // plastic work per unit initial volume after the step in the scene's order (common/nonlocal.hpp).
+      Real* density = raw(scratch_real_);
+      launch<kFlush>("work_density", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+        density[i] = mats[material[i]].eos.rho0 * (work[i] + h_work[i]);
+      });
+      thrust::scatter(scratch_real_.begin(), scratch_real_.begin() + n_, original_.begin(), work_scene_.begin());
+      const NonlocalGrid<Real> grid = nonlocal_grid_;
+      const Real* scene_density = raw(work_scene_);
+      const std::int32_t* orig = raw(original_);
+      launch<kFlush>("nonlocal_work", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+        const MaterialParams<Real>& m = mats[material[i]];
+        nonlocal[i] = damage_uses_nonlocal_work(m, D[i], h_eps[i], work[i] + h_work[i])
+                          ? nonlocal_work_density(grid, orig[i], damage_nonlocal_radius(m), scene_density)
+                          : Real(0);
+      });
+    }
     launch<kFlush>("finish_step", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
       finish_point(mats[material[i]], smoothing[body[i]], grad_v[i], dt, y.rho[i], y.energy[i], y.S[i], eps_p[i],
-                   work[i], T[i], D[i], P[i], bulking[i], h[i], h_eps[i], h_work[i], h_T[i], h_rate[i]);
+                   work[i], T[i], D[i], P[i], bulking[i], h[i], h_eps[i], h_work[i], h_T[i], h_rate[i],
+                   averages ? nonlocal[i] : Real(0));
     });
   }
 
@@ -366,6 +411,13 @@ class Solver final : public GpuStepper {
   DVec<MaterialParams<Real>> materials_;
   DVec<PairContact<Real>> contacts_;
   DVec<BodySmoothing<Real>> body_smoothing_;
+  // The non-local plastic work (common/nonlocal.hpp): the grid (scene order, never re-sorted), per scene
+  // index the plastic work per unit initial volume (J/m^3), per sorted slot the non-local average (J/m^3).
+  bool nonlocal_ = false;
+  NonlocalGrid<Real> nonlocal_grid_{};
+  DVec<std::int32_t> nl_cell_start_, nl_particle_, nl_body_, nl_entry_of_;
+  DVec<Vec3p> nl_position_;
+  DVec<Real> nl_volume_, work_scene_, nonlocal_work_;
   bool variable_h_ = false;   // some body has a variable smoothing length
   double contact_reach_ = 0;  // largest penalty contact distance, m
   double contact_srad_ = 0;   // largest SRAD of a penalty contact (touching at srad h)

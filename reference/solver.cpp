@@ -12,7 +12,8 @@ namespace impactsph::reference {
 ReferenceSolver::ReferenceSolver(const Scene& scene)
     : numerics_(scene.spec.numerics), params_(make_stage_params<double>(scene)),
       contacts_(make_pair_contacts<double>(scene)), smoothing_(make_body_smoothing<double>(scene)),
-      contact_reach_(contact_reach(scene)), materials_(scene.materials) {
+      contact_reach_(contact_reach(scene)), materials_(scene.materials),
+      nonlocal_grid_(build_nonlocal_grid(scene.particles, scene.materials)) {
   for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
   for (const BodySpec& b : scene.spec.bodies) variable_h_ = variable_h_ || b.variable_h;
 }
@@ -267,13 +268,31 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
   std::swap(p.rho, y1.rho);
   std::swap(p.energy, y1.energy);
   std::swap(p.dev_stress, y1.dev_stress);
+  // The non-local plastic work of the particles that may fail on it this step (common/nonlocal.hpp), from
+  // every particle's plastic work after the step.
+  nonlocal_work_.assign(n, 0.0);
+  if (!nonlocal_grid_.empty()) {
+    work_density_.resize(n);
+    parallel_for(static_cast<std::int64_t>(n), [&](std::int64_t i) {
+      const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
+      work_density_[i] = mat.eos.rho0 * (p.plastic_work[i] + history.d_plastic_work[i]);
+    });
+    const NonlocalGrid<double> grid = nonlocal_grid_.view();
+    parallel_for(static_cast<std::int64_t>(n), [&](std::int64_t i) {
+      const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
+      if (damage_uses_nonlocal_work(mat, p.damage[i], history.d_eps_p[i], p.plastic_work[i] + history.d_plastic_work[i]))
+        nonlocal_work_[i] = nonlocal_work_density(grid, static_cast<std::int32_t>(i), damage_nonlocal_radius(mat),
+                                                  work_density_.data());
+    });
+  }
   // History variables of the final stage: plastic strain, adiabatic heating, damage, bulking (F 4.7-4.9,
   // X eq 28; integration.hpp), and the smoothing length.
   parallel_for(static_cast<std::int64_t>(n), [&](std::int64_t i) IMPACTSPH_FLATTEN {
     finish_point(materials_[static_cast<std::size_t>(p.material[i])], smoothing_[static_cast<std::size_t>(p.body[i])],
                  grad_v_[static_cast<std::size_t>(i)], dt, p.rho[i], p.energy[i], p.dev_stress[i], p.plastic_strain[i],
                  p.plastic_work[i], p.temperature[i], p.damage[i], p.pressure[i], p.bulking_pressure[i], p.h[i],
-                 history.d_eps_p[i], history.d_plastic_work[i], history.d_temperature[i], history.strain_rate[i]);
+                 history.d_eps_p[i], history.d_plastic_work[i], history.d_temperature[i], history.strain_rate[i],
+                 nonlocal_work_[static_cast<std::size_t>(i)]);
   });
 }
 

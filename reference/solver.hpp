@@ -13,6 +13,7 @@
 #pragma once
 #include <vector>
 
+#include "common/nonlocal.hpp"
 #include "common/scene.hpp"
 #include "common/stage_setup.hpp"
 #include "common/stages.hpp"
@@ -80,6 +81,11 @@ class ReferenceSolver final : public Stepper {
   std::vector<BodySmoothing<double>> smoothing_;  // variable smoothing length per body
   ContactReach contact_reach_;                 // how far the penalty contacts reach
   std::vector<MaterialParams<double>> materials_;
+  // The initial configuration of the particles that average their plastic work (common/nonlocal.hpp),
+  // built from the scene before any checkpoint replaces its particles; per particle, the plastic work per
+  // unit initial volume after the step and its non-local average (J/m^3).
+  NonlocalGridData nonlocal_grid_;
+  std::vector<double> work_density_, nonlocal_work_;
   // Constant per particle (copied from the scene at each step).
   std::vector<double> mass_, h_;
   std::vector<std::int32_t> material_;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstring>
 #include <filesystem>
@@ -88,6 +89,48 @@ TEST(Restart, InterruptedRunContinuesBitForBit) {
   reference::ReferenceSolver solver3(other);
   opt.fingerprint = "another case";
   EXPECT_THROW(run_simulation(other, solver3, opt), std::runtime_error);
+  fs::remove_all(root);
+}
+
+// The 8 mm plate at 2.5 mm and 300 m/s with the non-local fracture energy (common/nonlocal.hpp): its first
+// failures come at about 32 us.
+Scene nonlocal_plate_scene() {
+  const std::vector<std::string> sets{
+      "projectile.velocity=300 m/s", "time.end=40us", "output.vtu=false", "output.picture=false",
+      "weldox-460e.damage={kind=\"fracture-energy\", fracture_energy=\"1300 kJ/m^2\", nonlocal_radius=\"6 mm\", "
+      "crack_faces=\"compression\"}"};
+  return build_scene(load_case_file(std::string(IMPACTSPH_CASES) + "/plate-8mm/case.toml", sets, "2.5 mm"));
+}
+
+// The non-local average runs over the initial configuration, which a restarted solver takes from the scene
+// it was made from, before the checkpoint replaces the particles: a run stopped before the first failures
+// continues with the same bits, failures included.
+TEST(Restart, NonlocalDamageContinuesBitForBit) {
+  const fs::path root = fs::temp_directory_path() / ("impactsph-restart-nonlocal-" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  RunOptions opt;
+  opt.quiet = true;
+  opt.fingerprint = "test";
+  Scene straight = nonlocal_plate_scene();
+  reference::ReferenceSolver solver(straight);
+  opt.out_dir = root / "straight";
+  ASSERT_FALSE(run_simulation(straight, solver, opt).interrupted);
+
+  Scene stopped = nonlocal_plate_scene();
+  InterruptingStepper interrupting(stopped, 300);
+  opt.out_dir = root / "stopped";
+  ASSERT_TRUE(run_simulation(stopped, interrupting, opt).interrupted);
+  const auto failed = [](const ParticleSet& p) { return std::count_if(p.damage.begin(), p.damage.end(), [](double d) { return d >= 1; }); };
+  EXPECT_EQ(failed(stopped.particles), 0);
+
+  Scene resumed = nonlocal_plate_scene();
+  reference::ReferenceSolver solver2(resumed);
+  opt.restart = true;
+  ASSERT_FALSE(run_simulation(resumed, solver2, opt).interrupted);
+  EXPECT_GT(failed(straight.particles), 0);
+  EXPECT_TRUE(same_bits(straight.particles.damage, resumed.particles.damage));
+  EXPECT_TRUE(same_bits(straight.particles.pos, resumed.particles.pos));
+  EXPECT_TRUE(same_bits(straight.particles.vel, resumed.particles.vel));
   fs::remove_all(root);
 }
 

@@ -31,6 +31,9 @@ struct FlowState {
 template <class Real>
 struct DamageStep {
   Real d_eps_p, eps_p_after, w_p_after, P, sigma_eq, eps_rate, T;
+  // The non-local plastic work density around the particle after the step (J/m^3, common/nonlocal.hpp),
+  // for a model that asks for it (damage_uses_nonlocal_work); 0 where the solver did not form it.
+  Real nonlocal_work;
 };
 
 // A fully failed particle (D >= 1; F section 4.2, physics-notes) carries no deviatoric stress and no
