@@ -342,7 +342,3 @@ TEST(CaseFileErrors, BadNoses) {
   t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]", "max = [\"10 mm\", \"10 mm\", \"2 mm\"]\nnose = { kind = \"flat\" }");
   expect_error(t, "bodies[0].nose", "\"nose\" is a key of a cylinder, not of a box", -1);
 }
-
-// Both plate cases take Weldox 460 E from cases/materials/weldox-460e.toml, whose crack-band criterion the
-// scene turns into a critical plastic work Gamma / (k h0) at its spacing (damage_fracture_energy.hpp): twice as large at
-// 1 mm as at 2 mm.

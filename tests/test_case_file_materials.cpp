@@ -336,6 +336,8 @@ TEST(CaseFile, ReadsNoses) {
   EXPECT_NEAR(s.bodies[1].nose_length, 2e-3 * std::sqrt(5.0), 1e-15);  // R sqrt(4 crh - 1)
 }
 
+// Both plate cases take Weldox 460 E from cases/materials/weldox-460e.toml, whose non-local fracture energy
+// the scene turns into the same critical plastic work at every spacing (damage_fracture_energy.hpp).
 TEST(CaseFileLoad, PlateCasesShareTheWeldoxMaterialFile) {
   const std::string cases = IMPACTSPH_CASES;
   const CaseSpec p8 = impactsph::load_case_file(cases + "/plate-8mm/case.toml", {}, "2 mm");
@@ -353,15 +355,17 @@ TEST(CaseFileLoad, PlateCasesShareTheWeldoxMaterialFile) {
   EXPECT_EQ(a.damage.kind, impactsph::DamageKind::FractureEnergy);
   EXPECT_EQ(b.damage.kind, a.damage.kind);
   EXPECT_EQ(b.damage.fracture_energy.gamma, a.damage.fracture_energy.gamma);
-  EXPECT_EQ(b.damage.fracture_energy.band_width_factor, a.damage.fracture_energy.band_width_factor);
+  EXPECT_EQ(b.damage.fracture_energy.nonlocal_radius, a.damage.fracture_energy.nonlocal_radius);
   EXPECT_EQ(b.strength.johnson_cook.a, a.strength.johnson_cook.a);
   EXPECT_GT(a.damage.fracture_energy.gamma, 0);
-  const double h0_2mm = p8.numerics.h_factor * 2e-3;
+  // The non-local criterion: its critical work Gamma / (32 R / 35) is the same at every spacing.
+  const double R = a.damage.fracture_energy.nonlocal_radius;
+  EXPECT_GT(R, 0);
   const impactsph::Scene coarse = impactsph::build_scene(p8);
-  EXPECT_NEAR(coarse.materials[k].damage.fracture_energy.critical_work,
-              a.damage.fracture_energy.gamma / (a.damage.fracture_energy.band_width_factor * h0_2mm), 1e-9 * a.damage.fracture_energy.gamma / h0_2mm);
+  EXPECT_NEAR(coarse.materials[k].damage.fracture_energy.critical_work, a.damage.fracture_energy.gamma / (32.0 / 35.0 * R),
+              1e-9 * a.damage.fracture_energy.gamma / R);
   const impactsph::Scene fine = impactsph::build_scene(impactsph::load_case_file(cases + "/plate-8mm/case.toml", {}, "1 mm"));
-  EXPECT_NEAR(fine.materials[k].damage.fracture_energy.critical_work / coarse.materials[k].damage.fracture_energy.critical_work, 2.0, 1e-12);
+  EXPECT_EQ(fine.materials[k].damage.fracture_energy.critical_work, coarse.materials[k].damage.fracture_energy.critical_work);
 }
 
 // The material files a case reads, for the run fingerprints (app/run_args.cpp): a changed material file
