@@ -22,7 +22,7 @@ namespace impactsph {
 
 // The critical work W_c = Gamma / L (J/m^3) of a material's damage constants (`Damage` is DamageParams,
 // material.hpp) at the initial smoothing length h0 (m): L = 32 R / 35 (nonlocal_band_width,
-// common/nonlocal.hpp) for a non-local radius R > 0, else k h0.
+// common/nonlocal_weight.hpp) for a non-local radius R > 0, else k h0.
 template <class Damage, class Real> IMPACTSPH_HD Real fracture_energy_critical_work(const Damage& d, Real h0) {
   const auto& f = d.fracture_energy;
   return f.gamma / (f.nonlocal_radius > 0 ? nonlocal_band_width(f.nonlocal_radius) : f.band_width_factor * h0);
