@@ -56,6 +56,12 @@ template <class Real> IMPACTSPH_HD Real damage_nonlocal_radius(const MaterialPar
   return m.damage.kind == DamageKind::FractureEnergy ? m.damage.fracture_energy.nonlocal_radius : Real(0);
 }
 
+// Plastic work per unit initial volume (J/m^3) of a particle whose plastic work per unit mass is w_p (J/kg):
+// rho0 w_p, what the fracture-energy criterion and its non-local average compare with W_c.
+template <class Real> IMPACTSPH_HD Real plastic_work_density(const MaterialParams<Real>& m, Real w_p) {
+  return m.eos.rho0 * w_p;
+}
+
 // Whether the solvers must form the non-local plastic work density of a particle for its damage increment
 // this step: its material averages (damage_nonlocal_radius > 0), it is intact, it flowed plastically
 // (d_eps_p > 0), and its own plastic work density rho0 w_p (J/m^3; w_p in J/kg after the step) reached the
@@ -64,7 +70,7 @@ template <class Real> IMPACTSPH_HD Real damage_nonlocal_radius(const MaterialPar
 template <class Real>
 IMPACTSPH_HD bool damage_uses_nonlocal_work(const MaterialParams<Real>& m, Real D, Real d_eps_p, Real w_p_after) {
   return damage_nonlocal_radius(m) > Real(0) && D < Real(1) && d_eps_p > Real(0) &&
-         m.eos.rho0 * w_p_after >= m.damage.fracture_energy.critical_work;
+         plastic_work_density(m, w_p_after) >= m.damage.fracture_energy.critical_work;
 }
 
 // Damage a particle brings into the pair factor below: its D when its material scales pairs (F eq 4.10),

@@ -359,7 +359,7 @@ class Solver final : public GpuStepper {
       // plastic work per unit initial volume after the step in the scene's order (common/nonlocal.hpp).
       Real* density = raw(scratch_real_);
       launch<kFlush>("work_density", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
-        density[i] = mats[material[i]].eos.rho0 * (work[i] + h_work[i]);
+        density[i] = plastic_work_density(mats[material[i]], work[i] + h_work[i]);
       });
       thrust::scatter(scratch_real_.begin(), scratch_real_.begin() + n_, original_.begin(), work_scene_.begin());
       const NonlocalGrid<Real> grid = nonlocal_grid_;

@@ -274,8 +274,8 @@ void ReferenceSolver::step(ParticleSet& p, double dt) {
   if (!nonlocal_grid_.empty()) {
     work_density_.resize(n);
     parallel_for(static_cast<std::int64_t>(n), [&](std::int64_t i) {
-      const MaterialParams<double>& mat = materials_[static_cast<std::size_t>(p.material[i])];
-      work_density_[i] = mat.eos.rho0 * (p.plastic_work[i] + history.d_plastic_work[i]);
+      work_density_[i] = plastic_work_density(materials_[static_cast<std::size_t>(p.material[i])],
+                                              p.plastic_work[i] + history.d_plastic_work[i]);
     });
     const NonlocalGrid<double> grid = nonlocal_grid_.view();
     parallel_for(static_cast<std::int64_t>(n), [&](std::int64_t i) {
