@@ -150,25 +150,56 @@ if unit not in GAMMA_UNITS:
     sys.exit('mechanism: %s: damage.fracture_energy "%s": expected a number and one of %s'
              % (MATERIAL, gamma_text, ', '.join(GAMMA_UNITS)))
 gamma = float(value) * GAMMA_UNITS[unit]
-k_band = material['band_width_factor']
+LENGTH_UNITS = {'m': 1.0, 'mm': 1e-3, 'um': 1e-6}
+
+
+def nonlocal_charge(width, radius):
+    """Energy per unit crack area of a band of uniform W, `width` (m) wide, under the non-local criterion of
+    averaging radius `radius` (m), against Gamma: 1 / mean (1 - t^2)^3 over |t| < width / (2 R) (the bell
+    weight (1 - r^2/R^2)^2 integrated over a plane, common/nonlocal_weight.hpp); a band 2R or wider holds
+    W_c b = Gamma b / L."""
+    b = width / (2 * radius)
+    c = min(b, 1.0)
+    integral = c - c ** 3 + 3 * c ** 5 / 5 - c ** 7 / 7  # of (1 - t^2)^3 from 0 to min(b, 1); 16/35 at 1
+    return b / integral
+
+
+if 'nonlocal_radius' in material:
+    value_r, unit_r = (material['nonlocal_radius'].split() + [''])[:2]
+    if unit_r not in LENGTH_UNITS:
+        sys.exit('mechanism: %s: damage.nonlocal_radius "%s": expected a number and one of %s'
+                 % (MATERIAL, material['nonlocal_radius'], ', '.join(LENGTH_UNITS)))
+    r_nl = float(value_r) * LENGTH_UNITS[unit_r]
+    criterion = ('The non-local criterion (the material file\'s nonlocal_radius R = %s) fails a particle once its own '
+                 'plastic work density W and the average of W within R both reach W_c = Gamma / L, L = 32 R / 35 = '
+                 '%.2f mm, Gamma = %s. A band of uniform W that is b wide then holds Gamma / mean (1 - t^2)^3, '
+                 '|t| < b / 2R, per unit crack area, whatever the spacing: "model" below, against Gamma. The '
+                 'criterion holds when W x width follows the model at every spacing.'
+                 % (material['nonlocal_radius'], 1e3 * 32 * r_nl / 35, gamma_text))
+    model = lambda width, h0: nonlocal_charge(width, r_nl)
+else:
+    k_band = material['band_width_factor']
+    criterion = ('The crack band assumes that the band which fails is k h0 wide at every spacing (k = %g, the material '
+                 'file\'s band_width_factor; h0 the initial smoothing length), so that a particle failing at the '
+                 'plastic work density W = Gamma / (k h0) leaves Gamma = %s per unit crack area: "model" below, '
+                 'the band\'s width over k h0.' % (k_band, gamma_text))
+    model = lambda width, h0: width / (k_band * h0)
 lines += ['', '## The band at the first failures', '',
-          'The crack band assumes that the band which fails is k h0 wide at every spacing (k = %g, the material '
-          'file\'s band_width_factor; h0 the initial smoothing length), so that a particle failing at the plastic '
-          'work density W = Gamma / (k h0) leaves Gamma = %s per unit crack area. Measured by shear_band.py '
-          '(band_width: the energy width of the plastic work profile across the band at the projectile\'s '
-          'radius; failure_work: the median W of the failed plate particles) on the first frame with a failed '
-          'particle: the width the band has, and the energy per unit area it holds at failure, W times that '
-          'width, against Gamma.' % (k_band, gamma_text), '',
-          '| spacing | frame | band width | in h0 | W at failure | W x width | against Gamma |',
-          '|---|---|---|---|---|---|---|']
+          criterion + ' Measured by shear_band.py (band_width: the energy width of the plastic work profile across '
+          'the band at the projectile\'s radius; failure_work: the median W of the failed plate particles) on the '
+          'first frame with a failed particle: the width the band has, and the energy per unit area it holds at '
+          'failure, W times that width, against Gamma.', '',
+          '| spacing | frame | band width | in h0 | W at failure | W x width | against Gamma | model |',
+          '|---|---|---|---|---|---|---|---|']
 for (s, summary, *_), band in zip(table, bands):
     if band is None:
-        lines.append('| %s mm | no failed particle in the frames | | | | | |' % s)
+        lines.append('| %s mm | no failed particle in the frames | | | | | | |' % s)
         continue
     t, width, w_fail = band
     h0 = summary['smoothing_length_m']
-    lines.append('| %s mm | %.0f us | %.2f mm | %.2f | %.1f MJ/m^3 | %.0f kJ/m^2 | %+.1f %% |' % (
-        s, t * 1e6, width * 1e3, width / h0, w_fail * 1e-6, w_fail * width * 1e-3, 100 * (w_fail * width / gamma - 1)))
+    lines.append('| %s mm | %.0f us | %.2f mm | %.2f | %.1f MJ/m^3 | %.0f kJ/m^2 | %+.1f %% | %+.1f %% |' % (
+        s, t * 1e6, width * 1e3, width / h0, w_fail * 1e-6, w_fail * width * 1e-3, 100 * (w_fail * width / gamma - 1),
+        100 * (model(width, h0) - 1)))
 lines += ['', 'Each run\'s picture.png (drawn when the run finished; its time is in its title): a cut through the '
           'symmetry plane coloured by plastic strain, failed particles marked.', '']
 for s, summary, *_ in table:
