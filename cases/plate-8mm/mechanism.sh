@@ -15,7 +15,10 @@
 #   - the plate's plastic work, sum m w_p over the plate (whole plate: the quarter model times 4);
 #   - the share of the energy the plate took (internal + kinetic) that is internal energy but not plastic
 #     work: the artificial viscosity's heat and the stored elastic energy, which the code does not separate.
-# The crack band's claim is that these do not depend on the spacing. Environment: BUILD_DIR (default
+# A failure criterion with a length of its own (the crack band, the non-local fracture energy) claims that
+# these do not depend on the spacing. The band table below them takes the material file's criterion: the
+# band's width and its energy per unit crack area at the first failures, against Gamma and against what
+# the criterion charges a band of that width (band_width_factor or nonlocal_radius). Environment: BUILD_DIR (default
 # build), RUNS (default runs/mechanism-190.7), SPACINGS (mm, default "2 1.333 1"), THREADS (default 1),
 # OUT (default cases/plate-8mm/report-mechanism), END (the end time, default "160 us"; a run whose plug has
 # not come off by then is continued with `impactsph run --restart DIR --end LATER`). A spacing whose
