@@ -19,15 +19,17 @@ template <class Real> IMPACTSPH_HD Real wendland_c2_w(Real r, Real h) {
   const Real t = Real(1) - Real(0.5) * q;
   return alpha * (t * t) * (t * t) * (Real(2) * q + Real(1));
 }
-// dW/dr = -5 alpha q (1 - q/2)^3 / h, so grad W = -5 alpha (1 - q/2)^3 / h^2 * (x_i - x_j).
+// dW/dr = -5 alpha q (1 - q/2)^3 / h, so grad W = -5 alpha (1 - q/2)^3 / h^2 * (x_i - x_j). The gradient
+// factors are taken for every r and then chosen by q, with no branch, so that a loop over pairs can take
+// them in SIMD lanes (reference/solver.cpp, candidate_kernel).
 template <class Real> IMPACTSPH_HD Real wendland_c2_grad_factor(Real r, Real h) {
   const Real inv_h = Real(1) / h;
   const Real q = r * inv_h;
-  if (q >= Real(2)) return Real(0);
   const Real inv_h2 = inv_h * inv_h;
   const Real alpha = Real(21) / (Real(16) * Constants<Real>::pi) * inv_h2 * inv_h;
   const Real t = Real(1) - Real(0.5) * q;
-  return Real(-5) * alpha * t * t * t * inv_h2;
+  const Real f = Real(-5) * alpha * t * t * t * inv_h2;
+  return q >= Real(2) ? Real(0) : f;
 }
 
 // Cubic B-spline (X eq 2), 3D constant 1/(pi h^3):
@@ -46,12 +48,10 @@ template <class Real> IMPACTSPH_HD Real cubic_spline_w(Real r, Real h) {
 template <class Real> IMPACTSPH_HD Real cubic_spline_grad_factor(Real r, Real h) {
   const Real q = r / h;
   const Real alpha = Real(1) / (Constants<Real>::pi * h * h * h);
-  if (q < Real(1)) return alpha * (Real(-3) + Real(2.25) * q) / (h * h);
-  if (q < Real(2)) {
-    const Real t = Real(2) - q;
-    return Real(-0.75) * alpha * t * t / (q * h * h);
-  }
-  return Real(0);
+  const Real inner = alpha * (Real(-3) + Real(2.25) * q) / (h * h);
+  const Real t = Real(2) - q;
+  const Real outer = Real(-0.75) * alpha * t * t / (q * h * h);  // not taken at q = 0
+  return q < Real(1) ? inner : (q < Real(2) ? outer : Real(0));
 }
 
 template <class Real> IMPACTSPH_HD Real kernel_w(KernelKind k, Real r, Real h) {

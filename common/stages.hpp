@@ -210,20 +210,48 @@ IMPACTSPH_HD GradientRow<Real> gradient_row(const StagePoints<Real>& w, const Ma
           w.let_go[i]};
 }
 
+// The geometry of list entry j of row i: x_ij = x_i - x_j (taken in double, then rounded to Real), the
+// pair smoothing length h_ij = (h_i + h_j) / 2 and r = |x_ij| (m). Both passes take it of every pair.
+template <class Real>
+struct PairGeometry {
+  Vec3<Real> xij;
+  Real hij, r;
+  IMPACTSPH_HD bool in_support() const { return r < kernel_support(hij); }
+};
+template <class Real>
+IMPACTSPH_HD PairGeometry<Real> pair_geometry(const StagePoints<Real>& w, const Vec3p& x_i, Real h_i, std::int32_t j) {
+  const Vec3<Real> xij = cast3<Real>(x_i - w.x[j]);
+  const Real hij = Real(0.5) * (h_i + w.h[j]);
+  return {xij, hij, norm(xij)};
+}
+
+// Whether row i (of body body_i, letting go of the walls let_go_i) shares SPH sums with point j within its
+// support: not bodies in penalty contact, not an image behind a wall i let go of.
+template <class Real>
+IMPACTSPH_HD bool shares_sums(const StagePoints<Real>& w, std::int32_t body_i, unsigned let_go_i, std::int32_t j) {
+  return !(w.pair(body_i, w.body[j]).penalty || (w.image_walls[j] & let_go_i));
+}
+
+// Neighbour j's share of row i's pass 1 sums (add_gradient_pair) where the two share sums, with the pair's
+// x_ij and kernel gradient gw = grad_i W_ij (1/m^4).
+template <class Real>
+IMPACTSPH_HD void add_gradient_sph_pair(const StagePoints<Real>& w, const MaterialParams<Real>* mats,
+                                        const GradientRow<Real>& i, std::int32_t j, const Vec3<Real>& xij,
+                                        const Vec3<Real>& gw, GradientSums<Real>& sums) {
+  const bool face = i.face || compressive_crack_face(mats, w.mat[j], w.damage[j]);
+  add_gradient_pair(sums, w.vol[j], gw, xij, w.v[j] - i.v, w.rho[j] - i.rho, i.damage, w.damage[j], face);
+}
+
 // Neighbour j's share of row i's pass 1 sums (add_gradient_pair). Returns whether j lies within the kernel
 // support (a neighbour, for the statistics); bodies in penalty contact share no sums, nor does i with an
 // image behind a wall it let go of.
 template <class Kernel, class Real>
 IMPACTSPH_HD bool add_gradient_neighbour(const Kernel& kernel, const StagePoints<Real>& w, const MaterialParams<Real>* mats,
                                          const GradientRow<Real>& i, std::int32_t j, GradientSums<Real>& sums) {
-  const Vec3<Real> xij = cast3<Real>(i.x - w.x[j]);
-  const Real hij = Real(0.5) * (i.h + w.h[j]);
-  const Real r = norm(xij);
-  if (!(r < kernel_support(hij))) return false;
-  if (w.pair(i.body, w.body[j]).penalty || (w.image_walls[j] & i.let_go)) return true;
-  const Vec3<Real> gw = kernel.grad_factor(r, hij) * xij;
-  const bool face = i.face || compressive_crack_face(mats, w.mat[j], w.damage[j]);
-  add_gradient_pair(sums, w.vol[j], gw, xij, w.v[j] - i.v, w.rho[j] - i.rho, i.damage, w.damage[j], face);
+  const PairGeometry<Real> g = pair_geometry(w, i.x, i.h, j);
+  if (!g.in_support()) return false;
+  if (!shares_sums(w, i.body, i.let_go, j)) return true;
+  add_gradient_sph_pair(w, mats, i, j, g.xij, kernel.grad_factor(g.r, g.hij) * g.xij, sums);
   return true;
 }
 
@@ -286,24 +314,30 @@ IMPACTSPH_HD RateRow<Real> rate_row(const StageParams<Real>& prm, const StagePoi
 }
 
 // Neighbour j's share of row i's momentum and energy rates and delta-SPH diffusion (same material only),
-// where j shares SPH sums with i: within the kernel support, not in penalty contact, not an image behind a
-// wall i let go of. acc in m/s^2, de in J/kg/s, diffusion in the units of delta_sph_term. Returns whether j
-// added anything.
+// where the two share sums, with the pair's geometry g and kernel gradient gw = grad_i W_ij (1/m^4). acc in
+// m/s^2, de in J/kg/s, diffusion in the units of delta_sph_term.
+template <class Real>
+IMPACTSPH_HD void add_rate_sph_pair(KernelKind kernel, const StageParams<Real>& prm, const StagePoints<Real>& w,
+                                    const MaterialParams<Real>* mats, const RateRow<Real>& i, std::int32_t j,
+                                    const PairGeometry<Real>& g, const Vec3<Real>& gw, Vec3<Real>& acc, Real& de,
+                                    Real& diffusion) {
+  const Real stress_factor = artificial_stress_pair_factor(prm.art, kernel, g.r, g.hij);
+  add_momentum_energy_pair(i.side, pair_side(prm, w, mats, j), prm.visc, gw, g.xij, i.v - w.v[j], g.hij, w.m[j],
+                           stress_factor, acc, de);
+  if (w.mat[j] == i.mat)
+    diffusion += damaged_delta_sph_term(i.side.damage, w.damage[j], w.vol[j], i.side.rho, w.rho[j], g.xij, i.grad_rho,
+                                        w.grad_rho[j], gw);
+}
+
+// Neighbour j's share of row i's rates (add_rate_sph_pair) where j shares SPH sums with i: within the kernel
+// support, not in penalty contact, not an image behind a wall i let go of. Returns whether j added anything.
 template <class Kernel, class Real>
 IMPACTSPH_HD bool add_rate_neighbour(const Kernel& kernel, const StageParams<Real>& prm, const StagePoints<Real>& w,
                                      const MaterialParams<Real>* mats, const RateRow<Real>& i, std::int32_t j,
                                      Vec3<Real>& acc, Real& de, Real& diffusion) {
-  const Vec3<Real> xij = cast3<Real>(i.x - w.x[j]);
-  const Real hij = Real(0.5) * (i.h + w.h[j]);
-  const Real r = norm(xij);
-  if (!(r < kernel_support(hij)) || w.pair(i.body, w.body[j]).penalty || (w.image_walls[j] & i.let_go)) return false;
-  const Vec3<Real> gw = kernel.grad_factor(r, hij) * xij;
-  const Real stress_factor = artificial_stress_pair_factor(prm.art, kernel.kind(), r, hij);
-  add_momentum_energy_pair(i.side, pair_side(prm, w, mats, j), prm.visc, gw, xij, i.v - w.v[j], hij, w.m[j],
-                           stress_factor, acc, de);
-  if (w.mat[j] == i.mat)
-    diffusion += damaged_delta_sph_term(i.side.damage, w.damage[j], w.vol[j], i.side.rho, w.rho[j], xij, i.grad_rho,
-                                        w.grad_rho[j], gw);
+  const PairGeometry<Real> g = pair_geometry(w, i.x, i.h, j);
+  if (!g.in_support() || !shares_sums(w, i.body, i.let_go, j)) return false;
+  add_rate_sph_pair(kernel.kind(), prm, w, mats, i, j, g, kernel.grad_factor(g.r, g.hij) * g.xij, acc, de, diffusion);
   return true;
 }
 

@@ -52,6 +52,31 @@ StagePoints<double> ReferenceSolver::points() {
           params_.body_count};
 }
 
+// r and the kernel gradient factor of the candidate pairs [begin, end) of a row at x_i, h_i (pair_geometry,
+// Kernel::grad_factor: the same operations in the same order), into candidate_r_ and candidate_factor_: a loop
+// of its own, without branches, that the compiler takes in SIMD lanes.
+static_assert(sizeof(Vec3d) == 3 * sizeof(double), "candidate_kernel reads the positions as x, y, z in turn");
+constexpr double kCandidateMargin = 1 + 1e-9;  // on r^2 <= support^2, far above a rounding of the square root
+
+template <class Kernel>
+void ReferenceSolver::candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std::int64_t begin, std::int64_t end) {
+  const double xi = x_i.x, yi = x_i.y, zi = x_i.z;
+  const double* __restrict x = &x_[0].x;
+  const double* __restrict h = hh_.data();
+  const std::int32_t* __restrict cand = candidate_j_.data();
+  double* __restrict r_out = candidate_r_.data();
+  double* __restrict factor_out = candidate_factor_.data();
+#pragma omp simd
+  for (std::int64_t k = begin; k < end; ++k) {
+    const std::int64_t j = cand[k];
+    const double dx = xi - x[3 * j], dy = yi - x[3 * j + 1], dz = zi - x[3 * j + 2];
+    const double hij = 0.5 * (h_i + h[j]);
+    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+    r_out[k] = r;
+    factor_out[k] = kernel.grad_factor(r, hij);
+  }
+}
+
 void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   const std::size_t n = y.pos.size();
   const std::size_t total = n + ghosts_.size();
@@ -101,14 +126,53 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   const std::int32_t* nb = neighbours_.indices.data();
 
   // Pass 1 (stages.hpp): each real's gradients from its neighbours, then the ghosts' mirrored from their sources.
+  // It sorts the row's list entries as it goes (pair_j_): the SPH pairs to the front, the penalty contact
+  // pairs to the back (in reverse), those outside the support and behind let-go walls nowhere.
   row_neighbours_.resize(n);
   fell_back_.resize(n);
+  pair_j_.resize(neighbours_.indices.size());
+  candidate_j_.resize(neighbours_.indices.size());
+  candidate_r_.resize(neighbours_.indices.size());
+  candidate_factor_.resize(neighbours_.indices.size());
+  pair_grad_factor_.resize(neighbours_.indices.size());
+  pair_r_.resize(neighbours_.indices.size());
+  sph_end_.resize(n);
+  contact_begin_.resize(n);
   parallel_for(ni, [&](std::int64_t i) IMPACTSPH_FLATTEN {
     GradientSums<double> sums = GradientSums<double>::zero();
     const GradientRow<double> row = gradient_row(w, mats, i);
     std::int32_t neighbours = 0;  // within the kernel support, for the statistics
-    for (std::int64_t k = off[i]; k < off[i + 1]; ++k)
-      if (add_gradient_neighbour(kernel, w, mats, row, nb[k], sums)) ++neighbours;
+    std::int64_t sph = off[i], contact = off[i + 1];
+    std::int64_t candidates = off[i];
+    // The list's skin first, with no branch: the candidates are the entries that may lie within the support
+    // (r^2 against the support's square, with a margin above the rounding, so that no pair that pair_geometry
+    // takes in is dropped) and every penalty contact pair.
+    for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
+      const std::int32_t j = nb[k];
+      const double support = kernel_support(0.5 * (row.h + w.h[j]));
+      candidate_j_[candidates] = j;
+      candidates += (norm2(row.x - w.x[j]) <= support * support * kCandidateMargin) | w.pair(row.body, bb_[j]).penalty;
+    }
+    if (kernel.kind() == KernelKind::WendlandC2)
+      candidate_kernel(FixedKernel<KernelKind::WendlandC2>{}, row.x, row.h, off[i], candidates);
+    else
+      candidate_kernel(FixedKernel<KernelKind::CubicSpline>{}, row.x, row.h, off[i], candidates);
+    const double* cand_r = candidate_r_.data();
+    const double* cand_factor = candidate_factor_.data();
+    for (std::int64_t k = off[i]; k < candidates; ++k) {
+      const std::int32_t j = candidate_j_[k];
+      const bool penalty = w.pair(row.body, bb_[j]).penalty;
+      if (penalty) pair_j_[--contact] = j;
+      const PairGeometry<double> g{cast3<double>(row.x - w.x[j]), 0.5 * (row.h + w.h[j]), cand_r[k]};
+      if (!g.in_support()) continue;
+      ++neighbours;
+      if (penalty || !shares_sums(w, row.body, row.let_go, j)) continue;
+      const double factor = cand_factor[k];
+      pair_j_[sph] = j; pair_grad_factor_[sph] = factor; pair_r_[sph] = g.r; ++sph;
+      add_gradient_sph_pair(w, mats, row, j, g.xij, factor * g.xij, sums);
+    }
+    sph_end_[i] = sph;
+    contact_begin_[i] = contact;
     const CorrectedGradients<double> cg = finish_gradient_row(params_, w, i, sums);
     row_neighbours_[i] = neighbours;
     fell_back_[i] = cg.fell_back ? 1 : 0;
@@ -120,18 +184,22 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   for (std::size_t k = 0; k < ghosts_.size(); ++k)
     mirror_gradient_row(params_, w, static_cast<std::int64_t>(n + k), ghosts_[k].source, ghosts_[k].sign);
 
-  // Pass 2 (stages.hpp): the SPH pairs and the penalty contact pairs of each real, then its rates.
+  // Pass 2 (stages.hpp): the SPH pairs of each real that pass 1 kept, then its penalty contact pairs in list
+  // order (the two add into sums of their own), then its rates.
   f.vel.resize(n); f.acc.resize(n); f.drho.resize(n); f.denergy.resize(n); f.dstress.resize(n);
   f.strain_rate.resize(n); f.contact_power.resize(n);
+  const KernelKind kind = kernel.kind();
   parallel_for(ni, [&](std::int64_t i) IMPACTSPH_FLATTEN {
     const RateRow<double> row = rate_row(params_, w, mats, i);
     Vec3d acc{0, 0, 0}, contact{0, 0, 0};
     double de = 0, diffusion = 0, contact_power = 0;
-    for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
-      const std::int32_t j = nb[k];
-      if (w.pair(row.body, bb_[j]).penalty) add_contact_neighbour(w, mats, row, j, dt, contact, contact_power);
-      else add_rate_neighbour(kernel, params_, w, mats, row, j, acc, de, diffusion);
+    for (std::int64_t k = off[i]; k < sph_end_[i]; ++k) {
+      const std::int32_t j = pair_j_[k];
+      const PairGeometry<double> g{cast3<double>(row.x - w.x[j]), 0.5 * (row.h + w.h[j]), pair_r_[k]};
+      add_rate_sph_pair(kind, params_, w, mats, row, j, g, pair_grad_factor_[k] * g.xij, acc, de, diffusion);
     }
+    for (std::int64_t k = off[i + 1]; k-- > contact_begin_[i];)
+      add_contact_neighbour(w, mats, row, pair_j_[k], dt, contact, contact_power);
     const PointRates<double> r = point_rates(params_, w, mats[mat_[i]], i, grad_v_[i], acc, de, diffusion, contact,
                                              contact_power, fixed_[i] != 0);
     f.vel[i] = r.vel; f.acc[i] = r.acc; f.drho[i] = r.drho; f.denergy[i] = r.de; f.dstress[i] = r.dS;

@@ -70,6 +70,8 @@ class ReferenceSolver final : public Stepper {
   // before the step ends.
   void update_neighbours(const ParticleSet& p, double dt);
   void evaluate(const State& y, Rates& f, double dt);
+  template <class Kernel>
+  void candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std::int64_t begin, std::int64_t end);
   void advance(const State& y0, const Rates& f, double dt, State& out, History* history) const;
   void check_state(const State& y, double dt) const;
   // The work arrays as the stages (common/stages.hpp) read them.
@@ -117,6 +119,14 @@ class ReferenceSolver final : public Stepper {
   std::vector<double> damage_all_;  // damage of reals and ghosts
   std::vector<double> pair_damage_; // damage each particle brings into the pair factor (reals and ghosts)
   std::vector<std::int32_t> row_neighbours_, fell_back_;  // pass 1 per real: neighbours, 1 if it fell back
+  // The pairs of this evaluation, in the slots of the list's rows: pass 1 writes each row's SPH pairs (those
+  // that share sums, within the support) from the front of its slots, with their kernel gradient factor and
+  // r, and its penalty contact pairs from the back; pass 2 reads them back rather than test and take the
+  // kernel of every list entry again.
+  std::vector<std::int32_t> pair_j_, candidate_j_;
+  std::vector<double> pair_grad_factor_, pair_r_;  // 1/m^5, m
+  std::vector<double> candidate_r_, candidate_factor_;
+  std::vector<std::int64_t> sph_end_, contact_begin_;  // per real: its SPH pairs end, its contact pairs begin
   std::vector<Sym3d> stress_;       // deviatoric stress of reals and ghosts
   // Stage states and rates, kept between steps so that a step allocates nothing.
   State y0_, y_half_, y1_;
