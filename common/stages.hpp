@@ -218,11 +218,17 @@ struct PairGeometry {
   Real hij, r;
   IMPACTSPH_HD bool in_support() const { return r < kernel_support(hij); }
 };
+// The same with r given: the reference's pass loops take r once, in pass 1's candidate loop, as norm(x_ij).
+template <class Real>
+IMPACTSPH_HD PairGeometry<Real> pair_geometry_at(const StagePoints<Real>& w, const Vec3p& x_i, Real h_i, std::int32_t j,
+                                                 Real r) {
+  return {cast3<Real>(x_i - w.x[j]), Real(0.5) * (h_i + w.h[j]), r};
+}
 template <class Real>
 IMPACTSPH_HD PairGeometry<Real> pair_geometry(const StagePoints<Real>& w, const Vec3p& x_i, Real h_i, std::int32_t j) {
-  const Vec3<Real> xij = cast3<Real>(x_i - w.x[j]);
-  const Real hij = Real(0.5) * (h_i + w.h[j]);
-  return {xij, hij, norm(xij)};
+  PairGeometry<Real> g = pair_geometry_at(w, x_i, h_i, j, Real(0));
+  g.r = norm(g.xij);
+  return g;
 }
 
 // Whether row i (of body body_i, letting go of the walls let_go_i) shares SPH sums with point j within its

@@ -69,9 +69,8 @@ void ReferenceSolver::candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std
 #pragma omp simd
   for (std::int64_t k = begin; k < end; ++k) {
     const std::int64_t j = cand[k];
-    const double dx = xi - x[3 * j], dy = yi - x[3 * j + 1], dz = zi - x[3 * j + 2];
+    const double r = norm(Vec3d{xi - x[3 * j], yi - x[3 * j + 1], zi - x[3 * j + 2]});  // pair_geometry's x_ij
     const double hij = 0.5 * (h_i + h[j]);
-    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
     r_out[k] = r;
     factor_out[k] = kernel.grad_factor(r, hij);
   }
@@ -163,7 +162,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       const std::int32_t j = candidate_j_[k];
       const bool penalty = w.pair(row.body, bb_[j]).penalty;
       if (penalty) pair_j_[--contact] = j;
-      const PairGeometry<double> g{cast3<double>(row.x - w.x[j]), 0.5 * (row.h + w.h[j]), cand_r[k]};
+      const PairGeometry<double> g = pair_geometry_at(w, row.x, row.h, j, cand_r[k]);
       if (!g.in_support()) continue;
       ++neighbours;
       if (penalty || !shares_sums(w, row.body, row.let_go, j)) continue;
@@ -195,7 +194,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     double de = 0, diffusion = 0, contact_power = 0;
     for (std::int64_t k = off[i]; k < sph_end_[i]; ++k) {
       const std::int32_t j = pair_j_[k];
-      const PairGeometry<double> g{cast3<double>(row.x - w.x[j]), 0.5 * (row.h + w.h[j]), pair_r_[k]};
+      const PairGeometry<double> g = pair_geometry_at(w, row.x, row.h, j, pair_r_[k]);
       add_rate_sph_pair(kind, params_, w, mats, row, j, g, pair_grad_factor_[k] * g.xij, acc, de, diffusion);
     }
     for (std::int64_t k = off[i + 1]; k-- > contact_begin_[i];)
