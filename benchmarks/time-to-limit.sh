@@ -1,0 +1,97 @@
+#!/bin/bash
+# Time to a ballistic limit (issue 18): the same `impactsph ballistic-limit` search on the 8 mm plate, run
+# by an earlier build (BEFORE) and by this one (AFTER) in turn on the same machine, each to a bracket of
+# TOL m/s. The two builds must have the same physics (the same bits): then both searches make the same runs
+# with the same verdicts, and the ratio of their wall times is the speed-up of a whole search. Writes
+# OUT.md (OUT without .md) from the searches' ballistic.json and the wall time of each search.
+#
+#   BEFORE=/path/to/impactsph-of-901a706 BEFORE_COMMIT=901a706 bash benchmarks/time-to-limit.sh
+#
+# Settings (environment): SPACING (mm, default 2), FROM / TO (m/s, 120 / 180), TOL (m/s, 3), JOBS (2),
+# SETS (extra --set arguments, one string, e.g. the coarse rim), RUNS (runs/time-to-limit), OUT
+# (docs/speed/time-to-limit-<SPACING>mm), NOTE (what else ran on the machine), REPORT_ONLY=1 (no search:
+# the report from RUNS and the wall times recorded there).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BEFORE=${BEFORE:?set BEFORE to an impactsph binary built at an earlier commit with the same physics}
+BEFORE_COMMIT=${BEFORE_COMMIT:?set BEFORE_COMMIT to the commit BEFORE was built at}
+AFTER=${AFTER:-build/impactsph}
+AFTER_COMMIT=${AFTER_COMMIT:-$(git rev-parse --short HEAD)}
+SPACING=${SPACING:-2}
+FROM=${FROM:-120}
+TO=${TO:-180}
+TOL=${TOL:-3}
+JOBS=${JOBS:-2}
+SETS=${SETS:-}
+RUNS=${RUNS:-runs/time-to-limit}
+OUT=${OUT:-docs/speed/time-to-limit-${SPACING}mm}
+NOTE=${NOTE:-nothing else}
+
+for exe in "$BEFORE" "$AFTER"; do
+  [ -x "$exe" ] || { echo "time-to-limit: no executable $exe" >&2; exit 2; }
+done
+extra=()
+if [ -n "$SETS" ]; then extra=(--set "$SETS"); fi
+
+search() {  # label exe
+  local dir="$RUNS/$1-${SPACING}mm"
+  if [ "${REPORT_ONLY:-0}" = 1 ]; then return; fi
+  if [ -f "$dir/elapsed_s" ]; then echo "time-to-limit: $dir done before, kept"; return; fi
+  rm -rf "$dir"
+  mkdir -p "$dir"
+  local t0 t1
+  t0=$(date +%s.%N)
+  "$2" ballistic-limit cases/plate-8mm/case.toml --spacing "${SPACING}mm" --from "$FROM" --to "$TO" --tolerance "$TOL" \
+    --jobs "$JOBS" --set output.vtu=false "${extra[@]}" --out "$dir" | tee "$dir/search.log"
+  t1=$(date +%s.%N)
+  python3 -c "print(round($t1 - $t0, 1))" > "$dir/elapsed_s"
+}
+search before "$BEFORE"
+search after "$AFTER"
+
+python3 - "$RUNS" "$SPACING" "$OUT" "$BEFORE_COMMIT" "$AFTER_COMMIT" "$NOTE" "$FROM" "$TO" "$TOL" "$JOBS" "$SETS" <<'EOF'
+import datetime, json, os, platform, sys
+runs, spacing, out, before_commit, after_commit, note, v_from, v_to, tol, jobs, sets = sys.argv[1:]
+rows = []
+searches = {}
+for label, commit in (("before", before_commit), ("after", after_commit)):
+    d = os.path.join(runs, f"{label}-{spacing}mm")
+    j = json.load(open(os.path.join(d, "ballistic.json")))
+    elapsed = float(open(os.path.join(d, "elapsed_s")).read())
+    done = sorted(j["runs"], key=lambda r: r["v_impact_m_s"])
+    searches[label] = [(r["v_impact_m_s"], r["perforated"]) for r in done]
+    run_wall = sum(r["wall_s"] for r in done)
+    rows.append((label, commit, len(done), j["bracket_m_s"], j["limit_m_s"], elapsed, run_wall))
+same = searches["before"] == searches["after"]
+model = "unknown"
+for line in open("/proc/cpuinfo"):
+    if line.startswith("model name"):
+        model = line.split(":", 1)[1].strip()
+        break
+cores = os.cpu_count()
+cmd = (f"BEFORE=<impactsph built at {before_commit}> BEFORE_COMMIT={before_commit} SPACING={spacing} FROM={v_from} "
+       f"TO={v_to} TOL={tol} JOBS={jobs}" + (f" SETS='{sets}'" if sets else "") + f" NOTE=\"{note}\" bash benchmarks/time-to-limit.sh")
+with open(out + ".md", "w") as f:
+    f.write(f"# Time to a ballistic limit: the 8 mm plate at {spacing} mm\n\n")
+    f.write(f"Written by `{cmd}` ({datetime.datetime.now(datetime.timezone.utc).isoformat(timespec='seconds')}); "
+            "do not edit by hand.\n\n")
+    f.write(f"`impactsph ballistic-limit cases/plate-8mm/case.toml --spacing {spacing}mm --from {v_from} --to {v_to} "
+            f"--tolerance {tol} --jobs {jobs} --set output.vtu=false" + (f" --set '{sets}'" if sets else "") +
+            "`, run by each build in turn on the same machine; the wall time is the whole search's, from its start "
+            "to its result.\n\n")
+    f.write(f"| machine | {model}, {cores} cores |\n|---|---|\n| also running | {note} |\n\n")
+    f.write("| build | commit | runs | bracket (m/s) | limit (m/s) | search wall time | sum of the runs' wall times |\n")
+    f.write("|---|---|---|---|---|---|---|\n")
+    for label, commit, n, bracket, limit, elapsed, run_wall in rows:
+        f.write(f"| {label} | {commit} | {n} | {bracket[0]:g}-{bracket[1]:g} | {limit:.1f} | {elapsed:.0f} s | "
+                f"{run_wall:.0f} s |\n")
+    b, a = rows[0], rows[1]
+    f.write(f"\n**The search takes {a[5] / b[5]:.2f} of its former wall time ({b[5] / a[5]:.2f}x faster).** ")
+    if same:
+        f.write("Both searches ran the same speeds with the same verdicts (the two builds give the same bits), so "
+                "the ratio is the speed of the step alone.\n")
+    else:
+        f.write("**The two searches did not run the same speeds with the same verdicts**: the builds do not give "
+                "the same bits, and the ratio mixes the speed of the step with a different search.\n")
+print(open(out + ".md").read())
+EOF
