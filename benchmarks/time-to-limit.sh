@@ -49,6 +49,9 @@ search() {  # label exe
 search before "$BEFORE"
 search after "$AFTER"
 
+AFTER_SET=""
+if [ "$AFTER" != build/impactsph ]; then AFTER_SET="AFTER=<impactsph built at $AFTER_COMMIT> AFTER_COMMIT=$AFTER_COMMIT "; fi
+export AFTER_SET
 python3 - "$RUNS" "$SPACING" "$OUT" "$BEFORE_COMMIT" "$AFTER_COMMIT" "$NOTE" "$FROM" "$TO" "$TOL" "$JOBS" "$SETS" <<'EOF'
 import datetime, json, os, platform, sys
 runs, spacing, out, before_commit, after_commit, note, v_from, v_to, tol, jobs, sets = sys.argv[1:]
@@ -69,7 +72,8 @@ for line in open("/proc/cpuinfo"):
         model = line.split(":", 1)[1].strip()
         break
 cores = os.cpu_count()
-cmd = (f"BEFORE=<impactsph built at {before_commit}> BEFORE_COMMIT={before_commit} SPACING={spacing} FROM={v_from} "
+after_env = os.environ.get("AFTER_SET", "")
+cmd = (f"BEFORE=<impactsph built at {before_commit}> BEFORE_COMMIT={before_commit} {after_env}SPACING={spacing} FROM={v_from} "
        f"TO={v_to} TOL={tol} JOBS={jobs}" + (f" SETS='{sets}'" if sets else "") + f" NOTE=\"{note}\" bash benchmarks/time-to-limit.sh")
 with open(out + ".md", "w") as f:
     f.write(f"# Time to a ballistic limit: the 8 mm plate at {spacing} mm\n\n")
