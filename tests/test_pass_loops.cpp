@@ -120,6 +120,19 @@ TEST(ReferencePassLoops, PlateWithContactCrackFacesAndImagesAsTheUnfilteredLoops
   expect_same_step(s, "plate-8mm at 2 mm");
 }
 
+// Penalty contact reaching beyond the kernel support: particles of the two bodies touch at 3 spacings, the
+// support is 2.4 (h = 1.2 dx), so the contact pairs between 2.4 and 3 spacings are taken only because the
+// prefilter keeps every penalty pair whatever its distance.
+TEST(ReferencePassLoops, ContactBeyondTheKernelSupportAsTheUnfilteredLoops) {
+  CaseSpec spec = load_case_file(std::string(IMPACTSPH_CASES) + "/plate-8mm/case.toml",
+                                 {"projectile.velocity=190.7 m/s"}, "2 mm");
+  ASSERT_EQ(spec.contacts.size(), 1u);
+  spec.contacts[0].contact_distance = 3.0;
+  Scene s = build_scene(spec);
+  disturb(s.particles, 2e-3, 5.0, 2e-3, 80e6);
+  expect_same_step(s, "plate-8mm at 2 mm, contact at 3 spacings");
+}
+
 // The ceramics physics of paper X (JH-2 damage and bulking, SRAD penalty contact, variable smoothing
 // length), with partly damaged ceramic.
 TEST(ReferencePassLoops, CeramicsWithSradContactAndVariableHAsTheUnfilteredLoops) {
