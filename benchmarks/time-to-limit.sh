@@ -7,6 +7,9 @@
 #
 #   BEFORE=/path/to/impactsph-of-901a706 BEFORE_COMMIT=901a706 bash benchmarks/time-to-limit.sh
 #
+# BEFORE=none runs the AFTER search alone, where the earlier build's search would take longer than there is
+# time for; NO_BEFORE (required then) says why, and the report gives the one search's time, no ratio.
+#
 # Settings (environment): SPACING (mm, default 2), FROM / TO (m/s, 120 / 180), TOL (m/s, 3), JOBS (2),
 # SETS (extra --set arguments, one string, e.g. the coarse rim), RUNS (runs/time-to-limit), OUT
 # (docs/speed/time-to-limit-<SPACING>mm), NOTE (what else ran on the machine), REPORT_ONLY=1 (no search:
@@ -14,7 +17,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BEFORE=${BEFORE:?set BEFORE to an impactsph binary built at an earlier commit with the same physics}
-BEFORE_COMMIT=${BEFORE_COMMIT:?set BEFORE_COMMIT to the commit BEFORE was built at}
+if [ "$BEFORE" = none ]; then
+  BEFORE_COMMIT=none
+  NO_BEFORE=${NO_BEFORE:?with BEFORE=none, set NO_BEFORE to why no earlier build searched}
+else
+  BEFORE_COMMIT=${BEFORE_COMMIT:?set BEFORE_COMMIT to the commit BEFORE was built at}
+  NO_BEFORE=
+fi
 AFTER=${AFTER:-build/impactsph}
 AFTER_COMMIT=${AFTER_COMMIT:-$(git rev-parse --short HEAD)}
 SPACING=${SPACING:-2}
@@ -28,6 +37,7 @@ OUT=${OUT:-docs/speed/time-to-limit-${SPACING}mm}
 NOTE=${NOTE:-nothing else}
 
 for exe in "$BEFORE" "$AFTER"; do
+  [ "$exe" = none ] && continue
   [ -x "$exe" ] || { echo "time-to-limit: no executable $exe" >&2; exit 2; }
 done
 extra=()
@@ -46,18 +56,20 @@ search() {  # label exe
   t1=$(date +%s.%N)
   python3 -c "print(round($t1 - $t0, 1))" > "$dir/elapsed_s"
 }
-search before "$BEFORE"
+if [ "$BEFORE" != none ]; then search before "$BEFORE"; fi
 search after "$AFTER"
 
 AFTER_SET=""
 if [ "$AFTER" != build/impactsph ]; then AFTER_SET="AFTER=<impactsph built at $AFTER_COMMIT> AFTER_COMMIT=$AFTER_COMMIT "; fi
-export AFTER_SET
+export AFTER_SET NO_BEFORE
 python3 - "$RUNS" "$SPACING" "$OUT" "$BEFORE_COMMIT" "$AFTER_COMMIT" "$NOTE" "$FROM" "$TO" "$TOL" "$JOBS" "$SETS" <<'EOF'
 import datetime, json, os, platform, sys
 runs, spacing, out, before_commit, after_commit, note, v_from, v_to, tol, jobs, sets = sys.argv[1:]
 rows = []
 searches = {}
-for label, commit in (("before", before_commit), ("after", after_commit)):
+no_before = os.environ.get("NO_BEFORE", "")
+builds = (("after", after_commit),) if before_commit == "none" else (("before", before_commit), ("after", after_commit))
+for label, commit in builds:
     d = os.path.join(runs, f"{label}-{spacing}mm")
     j = json.load(open(os.path.join(d, "ballistic.json")))
     elapsed = float(open(os.path.join(d, "elapsed_s")).read())
@@ -65,7 +77,7 @@ for label, commit in (("before", before_commit), ("after", after_commit)):
     searches[label] = [(r["v_impact_m_s"], r["perforated"]) for r in done]
     run_wall = sum(r["wall_s"] for r in done)
     rows.append((label, commit, len(done), j["bracket_m_s"], j["limit_m_s"], elapsed, run_wall))
-same = searches["before"] == searches["after"]
+same = searches.get("before") == searches["after"]
 model = "unknown"
 for line in open("/proc/cpuinfo"):
     if line.startswith("model name"):
@@ -73,7 +85,9 @@ for line in open("/proc/cpuinfo"):
         break
 cores = os.cpu_count()
 after_env = os.environ.get("AFTER_SET", "")
-cmd = (f"BEFORE=<impactsph built at {before_commit}> BEFORE_COMMIT={before_commit} {after_env}SPACING={spacing} FROM={v_from} "
+before_env = (f"BEFORE=none NO_BEFORE=\"{no_before}\" " if before_commit == "none" else
+              f"BEFORE=<impactsph built at {before_commit}> BEFORE_COMMIT={before_commit} ")
+cmd = (f"{before_env}{after_env}SPACING={spacing} FROM={v_from} "
        f"TO={v_to} TOL={tol} JOBS={jobs}" + (f" SETS='{sets}'" if sets else "") + f" NOTE=\"{note}\" bash benchmarks/time-to-limit.sh")
 with open(out + ".md", "w") as f:
     f.write(f"# Time to a ballistic limit: the 8 mm plate at {spacing} mm\n\n")
@@ -81,21 +95,24 @@ with open(out + ".md", "w") as f:
             "do not edit by hand.\n\n")
     f.write(f"`impactsph ballistic-limit cases/plate-8mm/case.toml --spacing {spacing}mm --from {v_from} --to {v_to} "
             f"--tolerance {tol} --jobs {jobs} --set output.vtu=false" + (f" --set '{sets}'" if sets else "") +
-            "`, run by each build in turn on the same machine; the wall time is the whole search's, from its start "
-            "to its result.\n\n")
+            "`, run by " + ("this build alone" if no_before else "each build in turn on the same machine") +
+            "; the wall time is the whole search's, from its start to its result.\n\n")
     f.write(f"| machine | {model}, {cores} cores |\n|---|---|\n| also running | {note} |\n\n")
     f.write("| build | commit | runs | bracket (m/s) | limit (m/s) | search wall time | sum of the runs' wall times |\n")
     f.write("|---|---|---|---|---|---|---|\n")
     for label, commit, n, bracket, limit, elapsed, run_wall in rows:
         f.write(f"| {label} | {commit} | {n} | {bracket[0]:g}-{bracket[1]:g} | {limit:.1f} | {elapsed:.0f} s | "
                 f"{run_wall:.0f} s |\n")
-    b, a = rows[0], rows[1]
-    f.write(f"\n**The search takes {a[5] / b[5]:.2f} of its former wall time ({b[5] / a[5]:.2f}x faster).** ")
-    if same:
-        f.write("Both searches ran the same speeds with the same verdicts (the two builds give the same bits), so "
-                "the ratio is the speed of the step alone.\n")
+    if no_before:
+        f.write(f"\nNo earlier build's search, so no ratio: {no_before}\n")
     else:
-        f.write("**The two searches did not run the same speeds with the same verdicts**: the builds do not give "
-                "the same bits, and the ratio mixes the speed of the step with a different search.\n")
+        b, a = rows[0], rows[1]
+        f.write(f"\n**The search takes {a[5] / b[5]:.2f} of its former wall time ({b[5] / a[5]:.2f}x faster).** ")
+        if same:
+            f.write("Both searches ran the same speeds with the same verdicts (the two builds give the same bits), so "
+                    "the ratio is the speed of the step alone.\n")
+        else:
+            f.write("**The two searches did not run the same speeds with the same verdicts**: the builds do not give "
+                    "the same bits, and the ratio mixes the speed of the step with a different search.\n")
 print(open(out + ".md").read())
 EOF
