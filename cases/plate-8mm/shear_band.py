@@ -2,7 +2,7 @@
 """The plugging shear band of a plate run, frame by frame (the measurements of README.md, "Where the
 spacing enters").
 
-    python3 cases/plate-8mm/shear_band.py RUN_FOLDER [PROJECTILE_RADIUS_MM]
+    python3 cases/plate-8mm/shear_band.py RUN_FOLDER [PROJECTILE_RADIUS_MM] [--half-window MM]
 
 For each frame of the run (particles.pvd; run without output.vtu=false) it prints the time, the plug's
 displacement against the plate (mean axial position of the plate particles within half the projectile
@@ -15,8 +15,8 @@ Gamma = W_p(eps_c) k h0 carries over (cases/materials/weldox-460e.toml).
 
 The band width is the energy width of the radial profile of the plastic work density W = rho0 w_p
 (J/m^3) across the band: W is averaged in rings dx/2 wide within 5 dx of the projectile's radius (dx the
-lattice spacing, read from the particle masses), the mean of the two outermost rings on each side is the
-background, and the width is the area under the profile above it divided by its peak above it,
+lattice spacing, read from the particle masses; --half-window MM sets this reach in mm instead, the same at
+every spacing), the mean of the two outermost rings on each side is the background, and the width is the area under the profile above it divided by its peak above it,
   w = sum_rings (W_ring - W_bg) dx/2 / (W_peak - W_bg),
 printed in mm and in initial smoothing lengths h0 = h_factor dx (h_factor from the run's summary.json,
 else 1.2). It is the width the crack-band criterion assumes (common/models/damage_fracture_energy.hpp): a band that dissipates
@@ -35,10 +35,18 @@ from isolated_particles import read_vtu  # noqa: E402
 
 
 def main():
-    if len(sys.argv) not in (2, 3):
+    args = sys.argv[1:]
+    half_window = None
+    if '--half-window' in args:
+        k = args.index('--half-window')
+        if k + 1 >= len(args):
+            sys.exit('shear_band.py: --half-window needs a length in mm')
+        half_window = float(args[k + 1]) * 1e-3
+        del args[k:k + 2]
+    if len(args) not in (1, 2):
         sys.exit(__doc__)
-    run = sys.argv[1]
-    radius = (float(sys.argv[2]) if len(sys.argv) == 3 else 10.0) * 1e-3
+    run = args[0]
+    radius = (float(args[1]) if len(args) == 2 else 10.0) * 1e-3
     pvd_path = os.path.join(run, 'particles.pvd')
     if not os.path.exists(pvd_path):
         sys.exit('shear_band.py: no %s; run the case without --set output.vtu=false' % pvd_path)
@@ -53,7 +61,7 @@ def main():
     for t, name in frames:
         a = read_vtu(os.path.join(run, name))
         pos, body, damage, eps = a['Points'], a['body_id'], a['damage'], a['plastic_strain']
-        width, dx = band_width(a, radius)
+        width, dx = band_width(a, radius, half_window)
         band, failed, nose = [], 0, math.inf
         for k, p in enumerate(pos):
             if body[k] == 1:
@@ -101,19 +109,21 @@ def failure_work(a):
     return w[len(w) // 2] if w else float('nan')
 
 
-def band_width(a, radius):
-    """The energy width (m) of the plastic work profile across the band at `radius`, and the spacing (m)."""
+def band_width(a, radius, half_window=None):
+    """The energy width (m) of the plastic work profile across the band at `radius`, and the spacing (m).
+    The profile reaches half_window (m) to each side of `radius`, 5 dx when None."""
     pos, body, mass, rho, work = a['Points'], a['body_id'], a['mass'], a['density'], a['plastic_work']
     volumes = sorted(mass[k] / rho[k] for k in range(len(pos)) if body[k] == 0)
     dx = volumes[len(volumes) // 2] ** (1.0 / 3.0)
     rho0 = reference_density(a)
     ring = 0.5 * dx
-    count = int(round(10 * dx / ring))
+    reach = 5 * dx if half_window is None else half_window
+    count = 2 * int(round(reach / ring))
     sums, counts = [0.0] * count, [0] * count
     for k, p in enumerate(pos):
         if body[k] != 0:
             continue
-        b = int(math.floor((math.hypot(p[0], p[1]) - (radius - 5 * dx)) / ring))
+        b = int(math.floor((math.hypot(p[0], p[1]) - (radius - 0.5 * count * ring)) / ring))
         if 0 <= b < count:
             sums[b] += rho0 * work[k]
             counts[b] += 1
