@@ -16,7 +16,8 @@ Gamma = W_p(eps_c) k h0 carries over (cases/materials/weldox-460e.toml).
 The band width is the energy width of the radial profile of the plastic work density W = rho0 w_p
 (J/m^3) across the band: W is averaged in rings dx/2 wide within 5 dx of the projectile's radius (dx the
 lattice spacing, read from the particle masses; --half-window MM sets this reach in mm instead, the same at
-every spacing), the mean of the two outermost rings on each side is the background, and the width is the area under the profile above it divided by its peak above it,
+every spacing), the mean of the two outermost rings on each side is the background, and the width is the
+area under the profile above it divided by its peak above it,
   w = sum_rings (W_ring - W_bg) dx/2 / (W_peak - W_bg),
 printed in mm and in initial smoothing lengths h0 = h_factor dx (h_factor from the run's summary.json,
 else 1.2). It is the width the crack-band criterion assumes (common/models/damage_fracture_energy.hpp): a band that dissipates
@@ -39,9 +40,13 @@ def main():
     half_window = None
     if '--half-window' in args:
         k = args.index('--half-window')
-        if k + 1 >= len(args):
-            sys.exit('shear_band.py: --half-window needs a length in mm')
-        half_window = float(args[k + 1]) * 1e-3
+        try:
+            half_window = float(args[k + 1]) * 1e-3
+        except (IndexError, ValueError):
+            half_window = math.nan
+        if not half_window > 0:
+            sys.exit('shear_band.py: --half-window needs a positive length in mm (e.g. --half-window 5), got %s'
+                     % (args[k + 1] if k + 1 < len(args) else 'nothing'))
         del args[k:k + 2]
     if len(args) not in (1, 2):
         sys.exit(__doc__)
