@@ -13,7 +13,7 @@
 #
 # Environment: BUILD_DIR (default build), RUNS (default runs/band-reach), OUT (default
 # cases/plate-8mm/report-band-reach), REACHES (mm, default "3.5 5 7"). A spacing whose summary.json exists
-# is not run again. The 0.7 mm run takes about 20 minutes on one thread, the other three together about 6.
+# is not run again. The 0.7 mm run takes about 20 minutes on one thread, the other three together about 7.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 BUILD_DIR=${BUILD_DIR:-build}
