@@ -20,6 +20,18 @@ import sys
 import tomllib
 
 
+def pvd_frames(run):
+    """The frames of a run's particles.pvd: (time in s, path of the VTU file), in time order, each file once
+    (the last frame may be listed twice: the end time is also a frame time)."""
+    pvd = open(os.path.join(run, 'particles.pvd')).read()
+    frames, seen = [], set()
+    for t, name in re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"', pvd):
+        if name not in seen:
+            seen.add(name)
+            frames.append((float(t), os.path.join(run, name)))
+    return frames
+
+
 def read_vtu(path):
     data = open(path, 'rb').read()
     head, _, rest = data.partition(b'<AppendedData encoding="raw">')
@@ -76,15 +88,10 @@ def main():
     planes = [('xyz'.index(p['axis']), length(p.get('position', 0))) for p in case.get('boundaries', {}).get('symmetry', [])]
     names = [b['name'] for b in case['bodies']]
     target = names.index(sys.argv[2]) if len(sys.argv) == 3 else None
-    pvd = open(os.path.join(run, 'particles.pvd')).read()
-    frames, seen = [], set()
-    for t, name in re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"', pvd):
-        if name not in seen:  # the last frame may be listed twice (the end time is also a frame time)
-            seen.add(name)
-            frames.append((t, name))
+    frames = pvd_frames(run)
     ever, was_isolated, hits, hits_alone = set(), set(), {}, {}
-    for t, name in frames:
-        a = read_vtu(os.path.join(run, name))
+    for t, path in frames:
+        a = read_vtu(path)
         body = a['body_id']
         nb = neighbours(a['Points'], a['smoothing_length'], planes)
         if target is not None:

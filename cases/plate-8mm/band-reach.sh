@@ -36,10 +36,10 @@ COMMAND="bash cases/plate-8mm/band-reach.sh"
 [[ "$OUT" != cases/plate-8mm/report-band-reach ]] && COMMAND="OUT=$OUT $COMMAND"
 [[ "$REACHES" != "3.5 5 7" ]] && COMMAND="REACHES=\"$REACHES\" $COMMAND"
 COMMAND="$COMMAND" python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" $REACHES <<'PY'
-import json, math, os, re, sys
+import math, os, sys
 sys.path.insert(0, 'cases/hard')
 sys.path.insert(0, 'cases/plate-8mm')
-from isolated_particles import read_vtu
+from isolated_particles import pvd_frames, read_vtu
 from plate_runs import user_command
 from shear_band import band_width, failure_work
 
@@ -49,15 +49,13 @@ radius = 10e-3  # m, the projectile's radius (case.toml: diameter 20 mm)
 rows = []
 for s in ('2', '1.333', '1', '0.7'):
     run = os.path.join(runs, s + 'mm')
-    frames = re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"',
-                        open(os.path.join(run, 'particles.pvd')).read())
-    for t, f in frames:
-        a = read_vtu(os.path.join(run, f))
+    for t, path in pvd_frames(run):
+        a = read_vtu(path)
         w = failure_work(a)
         if math.isnan(w):
             continue
         widths = [band_width(a, radius)[0]] + [band_width(a, radius, r * 1e-3)[0] for r in reaches]
-        rows.append((s, float(t), w, widths, user_command(run)))
+        rows.append((s, t, w, widths, user_command(run)))
         break
     else:
         rows.append((s, None, math.nan, [], user_command(run)))

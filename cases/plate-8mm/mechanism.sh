@@ -42,10 +42,10 @@ for s in $SPACINGS; do
 done
 
 python3 - "$RUNS" "$OUT" "$(git rev-parse --short HEAD)" $SPACINGS <<'PY'
-import csv, json, math, os, re, shlex, shutil, sys, tomllib
+import csv, json, math, os, shlex, shutil, sys, tomllib
 sys.path.insert(0, 'cases/hard')
 sys.path.insert(0, 'cases/plate-8mm')
-from isolated_particles import read_vtu
+from isolated_particles import pvd_frames, read_vtu
 from shear_band import band_width, failure_work, plug_displacement
 
 runs, out, commit, spacings = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]
@@ -86,11 +86,9 @@ for s in spacings:
     summary = json.load(open(os.path.join(run, 'summary.json')))
     plate = summary['bodies'][0]
     multiplicity = round(plate['specified']['mass_kg'] / plate['initial_mass_kg'])
-    frames = re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"',
-                        open(os.path.join(run, 'particles.pvd')).read())
     series, band = [], None
-    for t, f in frames:
-        a = read_vtu(os.path.join(run, f))
+    for t, path in pvd_frames(run):
+        a = read_vtu(path)
         series.append((float(t), frame_measures(a, multiplicity)))
         w_fail = failure_work(a) if band is None else math.nan
         if not math.isnan(w_fail):

@@ -28,11 +28,10 @@ plate cases' quarter models); the target is body 0 and the projectile body 1, th
 import json
 import math
 import os
-import re
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'hard'))
-from isolated_particles import read_vtu  # noqa: E402
+from isolated_particles import pvd_frames, read_vtu  # noqa: E402
 
 
 def main():
@@ -55,7 +54,6 @@ def main():
     pvd_path = os.path.join(run, 'particles.pvd')
     if not os.path.exists(pvd_path):
         sys.exit('shear_band.py: no %s; run the case without --set output.vtu=false' % pvd_path)
-    frames = re.findall(r'timestep="([^"]+)" group="" part="0" file="([^"]+)"', open(pvd_path).read())
     h_factor = 1.2
     summary = os.path.join(run, 'summary.json')
     if os.path.exists(summary):
@@ -63,8 +61,8 @@ def main():
         h_factor = s['smoothing_length_m'] / s['spacing_m']
     print('%8s %12s %10s %7s %10s %9s %10s %8s %12s' % ('t [us]', 'plug dz [mm]', 'nose [mm]', 'failed', 'band eps',
                                                        'band max', 'width [mm]', 'width/h0', 'W fail [MJ/m3]'))
-    for t, name in frames:
-        a = read_vtu(os.path.join(run, name))
+    for t, path in pvd_frames(run):
+        a = read_vtu(path)
         pos, body, damage, eps = a['Points'], a['body_id'], a['damage'], a['plastic_strain']
         width, dx = band_width(a, radius, half_window)
         band, failed, nose = [], 0, math.inf
