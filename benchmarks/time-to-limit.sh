@@ -11,7 +11,8 @@
 # time for; NO_BEFORE (required then) says why, and the report gives the one search's time, no ratio.
 #
 # Settings (environment): SPACING (mm, default 2), FROM / TO (m/s, 120 / 180), TOL (m/s, 3), JOBS (2),
-# SETS (extra --set arguments, one string, e.g. the coarse rim), RUNS (runs/time-to-limit), OUT
+# SETS (extra --set arguments, one string, e.g. the coarse rim), BEFORE_SETS (the earlier build's, default SETS;
+# empty: none, for a before search at one resolution against an after search with the rim), RUNS (runs/time-to-limit), OUT
 # (docs/speed/time-to-limit-<SPACING>mm), NOTE (what else ran on the machine), REPORT_ONLY=1 (no search:
 # the report from RUNS and the wall times recorded there).
 set -euo pipefail
@@ -32,6 +33,7 @@ TO=${TO:-180}
 TOL=${TOL:-3}
 JOBS=${JOBS:-2}
 SETS=${SETS:-}
+BEFORE_SETS=${BEFORE_SETS-$SETS}
 RUNS=${RUNS:-runs/time-to-limit}
 OUT=${OUT:-docs/speed/time-to-limit-${SPACING}mm}
 NOTE=${NOTE:-nothing else}
@@ -40,10 +42,9 @@ for exe in "$BEFORE" "$AFTER"; do
   [ "$exe" = none ] && continue
   [ -x "$exe" ] || { echo "time-to-limit: no executable $exe" >&2; exit 2; }
 done
-extra=()
-if [ -n "$SETS" ]; then extra=(--set "$SETS"); fi
-
-search() {  # label exe
+search() {  # label exe sets
+  local extra=()
+  if [ -n "$3" ]; then extra=(--set "$3"); fi
   local dir="$RUNS/$1-${SPACING}mm"
   if [ "${REPORT_ONLY:-0}" = 1 ]; then return; fi
   if [ -f "$dir/elapsed_s" ]; then echo "time-to-limit: $dir done before, kept"; return; fi
@@ -56,17 +57,20 @@ search() {  # label exe
   t1=$(date +%s.%N)
   python3 -c "print(round($t1 - $t0, 1))" > "$dir/elapsed_s"
 }
-if [ "$BEFORE" != none ]; then search before "$BEFORE"; fi
-search after "$AFTER"
+if [ "$BEFORE" != none ]; then search before "$BEFORE" "$BEFORE_SETS"; fi
+search after "$AFTER" "$SETS"
 
 AFTER_SET=""
 if [ "$AFTER" != build/impactsph ]; then AFTER_SET="AFTER=<impactsph built at $AFTER_COMMIT> AFTER_COMMIT=$AFTER_COMMIT "; fi
 export AFTER_SET NO_BEFORE
-python3 - "$RUNS" "$SPACING" "$OUT" "$BEFORE_COMMIT" "$AFTER_COMMIT" "$NOTE" "$FROM" "$TO" "$TOL" "$JOBS" "$SETS" <<'EOF'
+python3 - "$RUNS" "$SPACING" "$OUT" "$BEFORE_COMMIT" "$AFTER_COMMIT" "$NOTE" "$FROM" "$TO" "$TOL" "$JOBS" "$SETS" "$BEFORE_SETS" <<'EOF'
 import datetime, json, os, platform, sys
-runs, spacing, out, before_commit, after_commit, note, v_from, v_to, tol, jobs, sets = sys.argv[1:]
+runs, spacing, out, before_commit, after_commit, note, v_from, v_to, tol, jobs, sets, before_sets = sys.argv[1:]
+if before_commit == "none":
+    before_sets = sets
 rows = []
 searches = {}
+run_rows = {}
 no_before = os.environ.get("NO_BEFORE", "")
 builds = (("after", after_commit),) if before_commit == "none" else (("before", before_commit), ("after", after_commit))
 for label, commit in builds:
@@ -75,6 +79,12 @@ for label, commit in builds:
     elapsed = float(open(os.path.join(d, "elapsed_s")).read())
     done = sorted(j["runs"], key=lambda r: r["v_impact_m_s"])
     searches[label] = [(r["v_impact_m_s"], r["perforated"]) for r in done]
+    run_rows[label] = []
+    for r in done:
+        summary_file = os.path.join(r.get("dir", ""), "summary.json")
+        summary = json.load(open(summary_file)) if os.path.exists(summary_file) else {}
+        run_rows[label].append((r["v_impact_m_s"], r["perforated"], r.get("residual_velocity_m_s", float("nan")),
+                                summary.get("particles", "(run folder gone)"), summary.get("steps", ""), r["wall_s"]))
     run_wall = sum(r["wall_s"] for r in done)
     rows.append((label, commit, len(done), j["bracket_m_s"], j["limit_m_s"], elapsed, run_wall))
 same = searches.get("before") == searches["after"]
@@ -88,15 +98,36 @@ after_env = os.environ.get("AFTER_SET", "")
 before_env = (f"BEFORE=none NO_BEFORE=\"{no_before}\" " if before_commit == "none" else
               f"BEFORE=<impactsph built at {before_commit}> BEFORE_COMMIT={before_commit} ")
 cmd = (f"{before_env}{after_env}SPACING={spacing} FROM={v_from} "
-       f"TO={v_to} TOL={tol} JOBS={jobs}" + (f" SETS='{sets}'" if sets else "") + f" NOTE=\"{note}\" bash benchmarks/time-to-limit.sh")
+       f"TO={v_to} TOL={tol} JOBS={jobs}" + (f" SETS='{sets}'" if sets else "") +
+       (f" BEFORE_SETS='{before_sets}'" if before_sets != sets else "") + f" NOTE=\"{note}\" bash benchmarks/time-to-limit.sh")
+
+
+def verdict_difference():
+    before, after = dict(searches["before"]), dict(searches["after"])
+    if set(before) != set(after):
+        return "the two scenes' verdicts differ near the limit, so the searches ran different speeds"
+    differ = [v for v in sorted(before) if before[v] != after[v]]
+    return ("they ran the same speeds, and the verdicts differ at " +
+            ", ".join(f"{v:g} m/s (earlier scene: {'perforated' if before[v] else 'held'}, "
+                      f"this one: {'perforated' if after[v] else 'held'})" for v in differ))
+
+
+def search_command(extra_sets):
+    return (f"impactsph ballistic-limit cases/plate-8mm/case.toml --spacing {spacing}mm --from {v_from} --to {v_to} "
+            f"--tolerance {tol} --jobs {jobs} --set output.vtu=false" + (f" --set '{extra_sets}'" if extra_sets else ""))
+
+
+
 with open(out + ".md", "w") as f:
     f.write(f"# Time to a ballistic limit: the 8 mm plate at {spacing} mm\n\n")
     f.write(f"Written by `{cmd}` ({datetime.datetime.now(datetime.timezone.utc).isoformat(timespec='seconds')}); "
             "do not edit by hand.\n\n")
-    f.write(f"`impactsph ballistic-limit cases/plate-8mm/case.toml --spacing {spacing}mm --from {v_from} --to {v_to} "
-            f"--tolerance {tol} --jobs {jobs} --set output.vtu=false" + (f" --set '{sets}'" if sets else "") +
-            "`, run by " + ("this build alone" if no_before else "each build in turn on the same machine") +
-            "; the wall time is the whole search's, from its start to its result.\n\n")
+    if before_sets == sets:
+        f.write(f"`{search_command(sets)}`, run by " + ("this build alone" if no_before else "each build in turn on the same machine") +
+                "; the wall time is the whole search's, from its start to its result.\n\n")
+    else:
+        f.write(f"The earlier build: `{search_command(before_sets)}`; this build: `{search_command(sets)}`; "
+                "each in turn on the same machine; the wall time is the whole search's, from its start to its result.\n\n")
     f.write(f"| machine | {model}, {cores} cores |\n|---|---|\n| also running | {note} |\n\n")
     f.write("| build | commit | runs | bracket (m/s) | limit (m/s) | search wall time | sum of the runs' wall times |\n")
     f.write("|---|---|---|---|---|---|---|\n")
@@ -108,11 +139,22 @@ with open(out + ".md", "w") as f:
     else:
         b, a = rows[0], rows[1]
         f.write(f"\n**The search takes {a[5] / b[5]:.2f} of its former wall time ({b[5] / a[5]:.2f}x faster).** ")
-        if same:
+        if before_sets != sets:
+            f.write("The two searches ran different scenes (the overrides above), so the ratio is the time to the answer "
+                    "of the whole change, the scene's particles and the step together, not the speed of the step alone"
+                    + (": they ran the same speeds with the same verdicts.\n" if same else
+                       "; " + verdict_difference() + ". The runs are listed below.\n"))
+        elif same:
             f.write("Both searches ran the same speeds with the same verdicts (the two builds give the same bits), so "
                     "the ratio is the speed of the step alone.\n")
         else:
             f.write("**The two searches did not run the same speeds with the same verdicts**: the builds do not give "
                     "the same bits, and the ratio mixes the speed of the step with a different search.\n")
+    f.write("\n| build | impact (m/s) | perforated | residual (m/s) | particles | steps | wall time |\n")
+    f.write("|---|---|---|---|---|---|---|\n")
+    for label, _ in builds:
+        for v, perforated, residual, particles, steps, wall in run_rows[label]:
+            f.write(f"| {label} | {v:g} | {'yes' if perforated else 'no'} | {residual:.1f} | {particles} | {steps} | "
+                    f"{wall:.0f} s |\n")
 print(open(out + ".md").read())
 EOF
