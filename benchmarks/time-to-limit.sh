@@ -1,8 +1,10 @@
 #!/bin/bash
 # Time to a ballistic limit (issue 18): the same `impactsph ballistic-limit` search on the 8 mm plate, run
 # by an earlier build (BEFORE) and by this one (AFTER) in turn on the same machine, each to a bracket of
-# TOL m/s. The two builds must have the same physics (the same bits): then both searches make the same runs
-# with the same verdicts, and the ratio of their wall times is the speed-up of a whole search. Writes
+# TOL m/s. With the same physics (the same bits) and the same overrides both searches make the same runs
+# with the same verdicts, and the ratio of their wall times is the speed-up of the step; with BEFORE_SETS
+# different from SETS (e.g. one resolution against the rim) it is the time to the answer of the whole change,
+# and the report names any speed whose verdict differs. Writes
 # OUT.md (OUT without .md) from the searches' ballistic.json and the wall time of each search.
 #
 #   BEFORE=/path/to/impactsph-of-901a706 BEFORE_COMMIT=901a706 bash benchmarks/time-to-limit.sh
@@ -115,7 +117,6 @@ def verdict_difference():
 def search_command(extra_sets):
     return (f"impactsph ballistic-limit cases/plate-8mm/case.toml --spacing {spacing}mm --from {v_from} --to {v_to} "
             f"--tolerance {tol} --jobs {jobs} --set output.vtu=false" + (f" --set '{extra_sets}'" if extra_sets else ""))
-
 
 
 with open(out + ".md", "w") as f:
