@@ -22,6 +22,11 @@ IMPACTSPH_HD Real min_of(Real a, Real b) { return a < b ? a : b; }
 template <class Real>
 IMPACTSPH_HD Real max_of(Real a, Real b) { return a > b ? a : b; }
 
+// `c ? a : b` with both taken: the form the pair functions use where a condition depends on the pair, so
+// that they also run on SIMD lanes (common/lanes.hpp overloads it for a lane mask).
+template <class Real>
+IMPACTSPH_HD Real choose(bool c, Real a, Real b) { return c ? a : b; }
+
 // Numbers that appear in several formulas.
 template <class Real>
 struct Constants {

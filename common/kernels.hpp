@@ -29,7 +29,7 @@ template <class Real> IMPACTSPH_HD Real wendland_c2_grad_factor(Real r, Real h) 
   const Real alpha = Real(21) / (Real(16) * Constants<Real>::pi) * inv_h2 * inv_h;
   const Real t = Real(1) - Real(0.5) * q;
   const Real f = Real(-5) * alpha * t * t * t * inv_h2;
-  return q >= Real(2) ? Real(0) : f;
+  return choose(q >= Real(2), Real(0), f);
 }
 
 // Cubic B-spline (X eq 2), 3D constant 1/(pi h^3):
@@ -51,7 +51,7 @@ template <class Real> IMPACTSPH_HD Real cubic_spline_grad_factor(Real r, Real h)
   const Real inner = alpha * (Real(-3) + Real(2.25) * q) / (h * h);
   const Real t = Real(2) - q;
   const Real outer = Real(-0.75) * alpha * t * t / (q * h * h);  // not taken at q = 0
-  return q < Real(1) ? inner : (q < Real(2) ? outer : Real(0));
+  return choose(q < Real(1), inner, choose(q < Real(2), outer, Real(0)));
 }
 
 template <class Real> IMPACTSPH_HD Real kernel_w(KernelKind k, Real r, Real h) {

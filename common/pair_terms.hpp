@@ -43,18 +43,30 @@ struct GradientSums {
 // (crack_face_stress), so the intact side must not strain with the failed particles sliding past it
 // either; its gradients are then those of the intact neighbours alone, one-sided and still first-order
 // exact through L_damaged.
+// The weight of a pair in the scaled sums, (1 - D_ij) V_j (m^3), and none across a crack face. Face is bool,
+// or a lane mask where the pairs are SIMD lanes (common/lanes.hpp).
+template <class Real, class Face>
+IMPACTSPH_HD Real damaged_gradient_weight(Real vol_j, Real damage_i, Real damage_j, Face crack_face) {
+  return choose(crack_face, Real(0), damaged_pair_factor(damage_i, damage_j) * vol_j);
+}
+// The velocity and density gradient sums' share of a pair of weight vf (damaged_gradient_weight).
+template <class Real>
+IMPACTSPH_HD void add_gradient_terms(Mat3<Real>& G, Vec3<Real>& grad_rho, Real vf, Vec3<Real> gw, Vec3<Real> v_ji,
+                                     Real drho_ji) {
+  G = G + vf * outer(v_ji, gw);
+  grad_rho += (vf * drho_ji) * gw;
+}
 template <class Real>
 IMPACTSPH_HD void add_gradient_pair(GradientSums<Real>& s, Real vol_j, Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> v_ji,
                                     Real drho_ji, Real damage_i, Real damage_j, bool crack_face) {
-  const Real vf = crack_face ? Real(0) : damaged_pair_factor(damage_i, damage_j) * vol_j;
+  const Real vf = damaged_gradient_weight(vol_j, damage_i, damage_j, crack_face);
   if (!s.apart && !(vf == vol_j)) {
     s.L_damaged = s.L;
     s.apart = true;
   }
   accumulate_correction(s.L, vol_j, gw, xij);
   if (s.apart) accumulate_correction(s.L_damaged, vf, gw, xij);
-  s.G = s.G + vf * outer(v_ji, gw);
-  s.grad_rho += (vf * drho_ji) * gw;
+  add_gradient_terms(s.G, s.grad_rho, vf, gw, v_ji, drho_ji);
 }
 
 // Pass 1 result: L^-1 (or the identity on fallback) for pass 2, the corrected velocity gradient

@@ -44,6 +44,9 @@
 #include "gpu/cells.hpp"
 #include "gpu/device_arrays.hpp"
 #include "gpu/launch.hpp"
+#if !defined(__CUDACC__)
+#include "common/lanes.hpp"
+#endif
 #include "gpu/phase_clock.hpp"
 #include "gpu/solver.hpp"
 
@@ -53,6 +56,20 @@ namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND {
 
 
 
+
+#if !defined(__CUDACC__)
+// The fields pass 1 reads of the kLanes points of a cluster (gpu/solver_clusters.hpp), lane by lane: one
+// cluster's data are contiguous, and each field of it is one SIMD load.
+template <class Real>
+struct alignas(64) ClusterPoints {
+  double x[kLanes], y[kLanes], z[kLanes];  // position, m
+  Real h[kLanes], vol[kLanes];             // smoothing length (m), volume m/rho (m^3)
+  Real vx[kLanes], vy[kLanes], vz[kLanes];  // velocity, m/s
+  Real rho[kLanes], damage[kLanes];         // density (kg/m^3), pair damage
+  std::int32_t slot[kLanes], body[kLanes], walls[kLanes], face[kLanes];  // sorted point (-1: none), body,
+                                                                         // image walls, crack face
+};
+#endif
 
 template <class Real>
 class Solver final : public GpuStepper {
@@ -74,6 +91,9 @@ class Solver final : public GpuStepper {
     for (const BodySmoothing<Real>& b : smoothing) variable_h_ = variable_h_ || b.variable;
     body_smoothing_ = smoothing;
     upload_nonlocal_grid(build_nonlocal_grid(scene.particles, scene.materials));
+#if !defined(__CUDACC__)
+    set_cluster_ranks(scene);
+#endif
   }
 
   std::string name() const override { return name_; }
@@ -462,12 +482,38 @@ class Solver final : public GpuStepper {
   DVec<Mat3<Real>> wlinv_, wgv_;
   StepStats stats_;
   PhaseClock clock_;
+
+#if !defined(__CUDACC__)
+ public:
+  // The host build's pass 1 over cluster pairs (gpu/solver_clusters.hpp); off (the default), it takes the rows
+  // as the CUDA kernels do.
+  void use_cluster_pairs(bool on) override {
+    cluster_pairs_ = on;
+    sorted_ = false;  // the next step sorts, and builds the clusters
+  }
+  void set_cluster_ranks(const Scene& scene);
+  void build_clusters();
+  void pack_cluster_points(const StagePoints<Real>& w);
+  template <class Kernel> void pass1_clusters(const Kernel& kernel, const StagePoints<Real>& w);
+  bool cluster_pairs_ = false;
+  bool cluster_pairs_possible_ = true;  // fewer than 31 bodies (one bit each in a lane)
+  std::vector<std::int32_t> cluster_rank_;     // per scene index: place in the Morton order of the scene
+  std::vector<std::int32_t> penalty_bits_;     // per body: bit b set where it is in penalty contact with body b
+  std::vector<std::int32_t> cluster_of_slot_;  // per sorted point
+  std::vector<std::int32_t> cluster_slot_;     // per cluster lane: the sorted point there, -1 for none
+  std::vector<std::int32_t> row_cluster_;      // row i's clusters: [list_offset_[i], row_cluster_end_[i])
+  std::vector<std::int64_t> row_cluster_end_;
+  std::vector<ClusterPoints<Real>> packed_;    // per cluster: what pass 1 reads of its points
+#endif
 };
 
 }  // namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND
 
 #include "gpu/solver_passes.hpp"
 #include "gpu/solver_sort.hpp"
+#if !defined(__CUDACC__)
+#include "gpu/solver_clusters.hpp"
+#endif
 
 namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND {
 

@@ -99,7 +99,13 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
   Mat3<Real>* grad_v = raw(grad_v_);
   std::int32_t* fell = raw(fallback_);
   std::int32_t* ncount = raw(neighbour_count_);
-  launch<kFlush>("pass1", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+#if !defined(__CUDACC__)
+  const bool clusters = cluster_pairs_ && cluster_pairs_possible_;
+  if (clusters) pass1_clusters(kernel, w);
+#else
+  constexpr bool clusters = false;
+#endif
+  if (!clusters) launch<kFlush>("pass1", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
     const std::int64_t s = slot[i];
     const GradientRow<Real> row = gradient_row(w, mats, s);
     Real sum[kGradientSums] = {};

@@ -178,6 +178,9 @@ void Solver<Real>::sort_particles() {
   wlinv_.resize(t); wgrad_rho_.resize(t); wav_.resize(t); wR_.resize(params_.art.on() ? t : 0);
   wgv_.resize(params_.visc.limited ? t : 0);
   wlet_go_.resize(t); wimage_walls_.resize(t);
+#if !defined(__CUDACC__)
+  if (cluster_pairs_ && cluster_pairs_possible_) build_clusters();
+#endif
   sorted_ = true;
   stats_.ghosts = static_cast<std::size_t>(ghosts_);
 }

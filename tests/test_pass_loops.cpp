@@ -1,9 +1,10 @@
 // The reference's pass loops (reference/solver.cpp) drop the Verlet skin before they take a pair, keep the
 // pairs of pass 1 for pass 2 and split each row into its SPH pairs and its penalty contact pairs. The gpu
-// port's host build (double) runs every list entry through the unfiltered common/stages.hpp functions
-// add_gradient_neighbour / add_rate_neighbour / add_contact_neighbour. The two differ only in the order of
-// their sums, so one step of each from the same state must agree to round-off: a pair that the prefilter
-// drops, or one sent to the wrong sum, moves a rate by a whole pair term, many orders above the bound here.
+// port's host build (double) takes pass 1 over cluster pairs in SIMD lanes (gpu/solver_clusters.hpp) or, as
+// the CUDA kernels do, every list entry through the unfiltered common/stages.hpp add_gradient_neighbour; pass
+// 2 every entry through add_rate_neighbour / add_contact_neighbour. They differ only in the order of their
+// sums, so one step of each from the same state must agree to round-off: a pair that the prefilter or a lane
+// mask drops, or one sent to the wrong sum, moves a rate by a whole pair term, many orders above the bound.
 // The scenes are set up so that every branch of the loops has pairs: penalty contact, failed and partly
 // damaged particles (crack faces), mirror images, a wall that some particles let go of, the artificial
 // stress, variable smoothing lengths.
@@ -43,10 +44,11 @@ FieldGap field_gap(const ParticleSet& before, const ParticleSet& ref, const Part
 // the field. Measured: 1e-16 to 2.5e-14 of it (round-off of the reordered sums); a pair dropped within the
 // last 1 % of the support's radius gave 1e-7 to 4e-5, contact pairs or a crack face or a wall's let-go
 // missed 0.03 to 1.8.
-void expect_same_step(const Scene& scene, const std::string& what) {
+void expect_same_step_as(const Scene& scene, const std::string& what, bool cluster_pairs) {
   Scene a = scene, b = scene;
   reference::ReferenceSolver ref(a);
   std::unique_ptr<gpu::GpuStepper> port = gpu::host::make_solver(b, gpu::Precision::Double);
+  port->use_cluster_pairs(cluster_pairs);
   const double dt = ref.stable_time_step(a.particles);
   ref.step(a.particles, dt);
   port->step(b.particles, dt);
@@ -70,6 +72,12 @@ void expect_same_step(const Scene& scene, const std::string& what) {
     if (field != "h") EXPECT_GT(g.increment, 0.0);
     EXPECT_LE(g.gap, 1e-9 * g.increment);
   }
+}
+// The port both ways: its host build's pass 1 over cluster pairs in SIMD lanes (gpu/solver_clusters.hpp),
+// and over the rows entry by entry as the CUDA kernels take them.
+void expect_same_step(const Scene& scene, const std::string& what) {
+  expect_same_step_as(scene, what + ", cluster pairs", true);
+  expect_same_step_as(scene, what + ", rows", false);
 }
 
 // A deterministic disturbance added to the state, so that no pair term cancels by symmetry and the pair
