@@ -1,5 +1,5 @@
 // Lanes<T>: kLanes values of T held in one SIMD register (a GCC vector type), for the pair loops of the gpu
-// port's host build over cluster pairs (gpu/clusters.hpp). The common/ pair functions are templates on Real;
+// port's host build over cluster pairs (gpu/solver_clusters.hpp). The common/ pair functions are templates on Real;
 // with Real = Lanes<T> each lane is one neighbour, and the overloads below (choose, min_of, max_of, norm)
 // stand where the scalar functions compare or take a root. A comparison gives a LaneMask. Host only.
 #pragma once
@@ -31,13 +31,6 @@ struct LaneMask {
   friend LaneMask operator&(LaneMask a, LaneMask b) { return {a.v & b.v}; }
   friend LaneMask operator|(LaneMask a, LaneMask b) { return {a.v | b.v}; }
   friend LaneMask operator!(LaneMask a) { return {~a.v}; }
-  friend LaneMask operator&&(LaneMask a, LaneMask b) { return {a.v & b.v}; }
-  friend LaneMask operator||(LaneMask a, LaneMask b) { return {a.v | b.v}; }
-  bool any() const {
-    for (int k = 0; k < kLanes; ++k)
-      if (v[k]) return true;
-    return false;
-  }
 };
 
 template <class T>
@@ -52,7 +45,6 @@ struct Lanes {
     std::memcpy(&r.v, p, sizeof(V));
     return r;
   }
-  T operator[](int k) const { return v[k]; }
 
   friend Lanes operator+(Lanes a, Lanes b) { return Lanes(a.v + b.v); }
   friend Lanes operator-(Lanes a, Lanes b) { return Lanes(a.v - b.v); }
@@ -61,7 +53,6 @@ struct Lanes {
   friend Lanes operator-(Lanes a) { return Lanes(-a.v); }
   Lanes& operator+=(Lanes b) { v += b.v; return *this; }
   Lanes& operator-=(Lanes b) { v -= b.v; return *this; }
-  Lanes& operator*=(Lanes b) { v *= b.v; return *this; }
   friend LaneMask<T> operator<(Lanes a, Lanes b) { return {a.v < b.v}; }
   friend LaneMask<T> operator<=(Lanes a, Lanes b) { return {a.v <= b.v}; }
   friend LaneMask<T> operator>(Lanes a, Lanes b) { return {a.v > b.v}; }

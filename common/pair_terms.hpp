@@ -28,6 +28,20 @@ struct GradientSums {
   IMPACTSPH_HD const Mat3<Real>& damaged_L() const { return apart ? L_damaged : L; }
 };
 
+// The weight of a pair in the scaled sums, (1 - D_ij) V_j (m^3), and none across a crack face. Face is bool,
+// or a lane mask where the pairs are SIMD lanes (common/lanes.hpp).
+template <class Real, class Face>
+IMPACTSPH_HD Real damaged_gradient_weight(Real vol_j, Real damage_i, Real damage_j, Face crack_face) {
+  return choose(crack_face, Real(0), damaged_pair_factor(damage_i, damage_j) * vol_j);
+}
+// The velocity and density gradient sums' share of a pair of weight vf (damaged_gradient_weight).
+template <class Real>
+IMPACTSPH_HD void add_gradient_terms(Mat3<Real>& G, Vec3<Real>& grad_rho, Real vf, Vec3<Real> gw, Vec3<Real> v_ji,
+                                     Real drho_ji) {
+  G = G + vf * outer(v_ji, gw);
+  grad_rho += (vf * drho_ji) * gw;
+}
+
 // Neighbour j's share of the pass 1 sums: v_ji = v_j - v_i, drho_ji = rho_j - rho_i, damage_i and damage_j
 // what the two bring into the damaged pair factor 1 - D_ij (pair_damage, damaged_pair_factor, F eq 4.10;
 // 1 for an intact pair). F 4.10 scales the kernel gradient of every interaction, so the velocity and
@@ -43,19 +57,6 @@ struct GradientSums {
 // (crack_face_stress), so the intact side must not strain with the failed particles sliding past it
 // either; its gradients are then those of the intact neighbours alone, one-sided and still first-order
 // exact through L_damaged.
-// The weight of a pair in the scaled sums, (1 - D_ij) V_j (m^3), and none across a crack face. Face is bool,
-// or a lane mask where the pairs are SIMD lanes (common/lanes.hpp).
-template <class Real, class Face>
-IMPACTSPH_HD Real damaged_gradient_weight(Real vol_j, Real damage_i, Real damage_j, Face crack_face) {
-  return choose(crack_face, Real(0), damaged_pair_factor(damage_i, damage_j) * vol_j);
-}
-// The velocity and density gradient sums' share of a pair of weight vf (damaged_gradient_weight).
-template <class Real>
-IMPACTSPH_HD void add_gradient_terms(Mat3<Real>& G, Vec3<Real>& grad_rho, Real vf, Vec3<Real> gw, Vec3<Real> v_ji,
-                                     Real drho_ji) {
-  G = G + vf * outer(v_ji, gw);
-  grad_rho += (vf * drho_ji) * gw;
-}
 template <class Real>
 IMPACTSPH_HD void add_gradient_pair(GradientSums<Real>& s, Real vol_j, Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> v_ji,
                                     Real drho_ji, Real damage_i, Real damage_j, bool crack_face) {
