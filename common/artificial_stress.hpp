@@ -116,7 +116,8 @@ IMPACTSPH_HD Sym3<Real> artificial_stress(const ArtificialStressParams<Real>& p,
 // f_ij^n = (W(r, h) / W(dp, h))^n for a pair at distance r (m) with pair smoothing length h (m),
 // dimensionless: 1 at the spacing, 0 beyond the support, and 0 when the artificial stress is off.
 template <class Real>
-IMPACTSPH_HD Real artificial_stress_pair_factor(const ArtificialStressParams<Real>& p, KernelKind kernel, Real r, Real h) {
+IMPACTSPH_HD Real artificial_stress_pair_factor(const ArtificialStressParams<ScalarOf<Real>>& p, KernelKind kernel, Real r,
+                                               Real h) {
   if (!p.on()) return Real(0);
   const Real f = kernel_w(kernel, r / h, Real(1)) * p.inverse_w_spacing;
   Real fn = Real(1);

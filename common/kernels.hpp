@@ -10,14 +10,14 @@ namespace impactsph {
 enum class KernelKind : int { WendlandC2 = 0, CubicSpline = 1 };
 
 // Wendland C2 (F eq 2.15): W = 21/(16 pi h^3) (1 - q/2)^4 (2q + 1), q = r/h in [0, 2].
-// One division per call: these run for every pair of every pass.
+// One division per call: these run for every pair of every pass. Both kernels' W, like their gradient
+// factors, take every branch and choose by q (pair loops in SIMD lanes, gpu/solver_clusters.hpp).
 template <class Real> IMPACTSPH_HD Real wendland_c2_w(Real r, Real h) {
   const Real inv_h = Real(1) / h;
   const Real q = r * inv_h;
-  if (q >= Real(2)) return Real(0);
   const Real alpha = Real(21) / (Real(16) * Constants<Real>::pi) * inv_h * inv_h * inv_h;
   const Real t = Real(1) - Real(0.5) * q;
-  return alpha * (t * t) * (t * t) * (Real(2) * q + Real(1));
+  return choose(q >= Real(2), Real(0), alpha * (t * t) * (t * t) * (Real(2) * q + Real(1)));
 }
 // dW/dr = -5 alpha q (1 - q/2)^3 / h, so grad W = -5 alpha (1 - q/2)^3 / h^2 * (x_i - x_j). The gradient
 // factors are taken for every r and then chosen by q, with no branch, so that a loop over pairs can take
@@ -37,12 +37,10 @@ template <class Real> IMPACTSPH_HD Real wendland_c2_grad_factor(Real r, Real h) 
 template <class Real> IMPACTSPH_HD Real cubic_spline_w(Real r, Real h) {
   const Real q = r / h;
   const Real alpha = Real(1) / (Constants<Real>::pi * h * h * h);
-  if (q < Real(1)) return alpha * (Real(1) - Real(1.5) * q * q + Real(0.75) * q * q * q);
-  if (q < Real(2)) {
-    const Real t = Real(2) - q;
-    return alpha * Real(0.25) * t * t * t;
-  }
-  return Real(0);
+  const Real inner = alpha * (Real(1) - Real(1.5) * q * q + Real(0.75) * q * q * q);
+  const Real t = Real(2) - q;
+  const Real outer = alpha * Real(0.25) * t * t * t;
+  return choose(q < Real(1), inner, choose(q < Real(2), outer, Real(0)));
 }
 // dW/dq = alpha (-3q + 2.25 q^2) or -0.75 alpha (2 - q)^2; grad W = (dW/dq)/(q h^2) (x_i - x_j).
 template <class Real> IMPACTSPH_HD Real cubic_spline_grad_factor(Real r, Real h) {

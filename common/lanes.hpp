@@ -1,7 +1,8 @@
 // Lanes<T>: kLanes values of T held in one SIMD register (a GCC vector type), for the pair loops of the gpu
 // port's host build over cluster pairs (gpu/solver_clusters.hpp). The common/ pair functions are templates on Real;
-// with Real = Lanes<T> each lane is one neighbour, and the overloads below (choose, min_of, max_of, norm)
-// stand where the scalar functions compare or take a root. A comparison gives a LaneMask. Host only.
+// with Real = Lanes<T> each lane is one neighbour, and the overloads below (choose, any_true, min_of, max_of,
+// sqrt, norm, exp) stand where the scalar functions compare, take a root or an exponential. A comparison
+// gives a LaneMask. Host only.
 #pragma once
 #if defined(__CUDACC__)
 #error "common/lanes.hpp is for host builds only"
@@ -53,12 +54,15 @@ struct Lanes {
   friend Lanes operator-(Lanes a) { return Lanes(-a.v); }
   Lanes& operator+=(Lanes b) { v += b.v; return *this; }
   Lanes& operator-=(Lanes b) { v -= b.v; return *this; }
+  Lanes& operator*=(Lanes b) { v *= b.v; return *this; }
   friend LaneMask<T> operator<(Lanes a, Lanes b) { return {a.v < b.v}; }
   friend LaneMask<T> operator<=(Lanes a, Lanes b) { return {a.v <= b.v}; }
   friend LaneMask<T> operator>(Lanes a, Lanes b) { return {a.v > b.v}; }
   friend LaneMask<T> operator>=(Lanes a, Lanes b) { return {a.v >= b.v}; }
   friend LaneMask<T> operator==(Lanes a, Lanes b) { return {a.v == b.v}; }
 };
+
+template <class T> struct ScalarType<Lanes<T>> { using type = T; };
 
 template <class T>
 struct Constants<Lanes<T>> {
@@ -75,6 +79,20 @@ template <class T> inline typename LaneMask<T>::V load_lane_ints(const std::int3
 
 // Lane by lane a where m, else b: the lane form of `m ? a : b`.
 template <class T> inline Lanes<T> choose(LaneMask<T> m, Lanes<T> a, Lanes<T> b) { return Lanes<T>(m.v ? a.v : b.v); }
+template <class T> inline Vec3<Lanes<T>> choose(LaneMask<T> m, const Vec3<Lanes<T>>& a, const Vec3<Lanes<T>>& b) {
+  return {choose(m, a.x, b.x), choose(m, a.y, b.y), choose(m, a.z, b.z)};
+}
+template <class T> inline Mat3<Lanes<T>> choose(LaneMask<T> m, const Mat3<Lanes<T>>& a, const Mat3<Lanes<T>>& b) {
+  Mat3<Lanes<T>> r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r.m[i][j] = choose(m, a.m[i][j], b.m[i][j]);
+  return r;
+}
+template <class T> inline bool any_true(LaneMask<T> m) {
+  for (int k = 0; k < kLanes; ++k)
+    if (m.v[k]) return true;
+  return false;
+}
 template <class T> inline Lanes<T> min_of(Lanes<T> a, Lanes<T> b) { return choose(a < b, a, b); }
 template <class T> inline Lanes<T> max_of(Lanes<T> a, Lanes<T> b) { return choose(a > b, a, b); }
 
@@ -100,6 +118,14 @@ inline Lanes<double> sqrt(Lanes<double> a) {
 #endif
 }
 template <class T> inline Lanes<T> norm(Vec3<Lanes<T>> a) { return sqrt(dot(a, a)); }
+
+// e^x of each lane by std::exp, lane by lane: the same bits as the scalar path (the limited viscosity's
+// close-approach fade, common/viscosity.hpp, the one exponential of the pair terms).
+template <class T> inline Lanes<T> exp(Lanes<T> a) {
+  Lanes<T> r;
+  for (int k = 0; k < kLanes; ++k) r.v[k] = std::exp(a.v[k]);
+  return r;
+}
 
 // Each lane rounded to another type (double positions to the Real of the pair terms).
 template <class To, class From> inline Lanes<To> lanes_cast(Lanes<From> a) {

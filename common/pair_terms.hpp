@@ -105,7 +105,7 @@ struct PairSide {
   Real av_factor;        // viscosity factor (1, or Balsara's)
   Real sound_speed;      // m/s
   Real rho;              // kg/m^3
-  bool crack_face;       // failed, with pairs that carry compression only (compressive_crack_face)
+  FlagOf<Real> crack_face;  // failed, with pairs that carry compression only (compressive_crack_face)
   Mat3<Real> R;          // artificial stress (artificial_stress.hpp), units of A; zero when off
   Mat3<Real> grad_v;     // velocity gradient dv_a/dx_b (1/s), for the limited viscosity; zero when it is off
 };
@@ -130,17 +130,20 @@ template <class Real> IMPACTSPH_HD Mat3<Real> crack_face_stress(const Mat3<Real>
 // at a crack face A_i + A_j becomes crack_face_stress(A_i, A_j) and carries no artificial stress.
 // h_ij is the pair smoothing length (m), m_j the mass of j (kg).
 template <class Real>
-IMPACTSPH_HD void add_momentum_energy_pair(const PairSide<Real>& i, const PairSide<Real>& j, const ViscosityParams<Real>& visc,
-                                           Vec3<Real> gw, Vec3<Real> xij, Vec3<Real> vij, Real hij, Real m_j,
-                                           Real stress_factor, Vec3<Real>& acc, Real& de) {
+IMPACTSPH_HD_INLINE void add_momentum_energy_pair(const PairSide<Real>& i, const PairSide<Real>& j,
+                                           const ViscosityParams<ScalarOf<Real>>& visc, Vec3<Real> gw, Vec3<Real> xij,
+                                           Vec3<Real> vij, Real hij, Real m_j, Real stress_factor, Vec3<Real>& acc,
+                                           Real& de) {
   const Vec3<Real> gt = (Real(0.5) * damaged_pair_factor(i.damage, j.damage)) * ((i.l_inverse + j.l_inverse) * gw);
   const Vec3<Real> v_visc = viscous_jump(visc, xij, vij, i.grad_v, j.grad_v, hij);
   const Real pi_ij = Real(0.5) * (i.av_factor + j.av_factor) *
                      monaghan_viscosity(visc, xij, v_visc, hij, Real(0.5) * (i.sound_speed + j.sound_speed),
                                         Real(0.5) * (i.rho + j.rho));
-  const bool face = i.crack_face || j.crack_face;
-  Mat3<Real> T = face ? crack_face_stress(i.A, j.A) : i.A + j.A;
-  if (stress_factor > Real(0) && !face) T = T + stress_factor * (i.R + j.R);
+  const FlagOf<Real> face = i.crack_face | j.crack_face;
+  Mat3<Real> T = i.A + j.A;
+  if (any_true(face)) T = choose(face, crack_face_stress(i.A, j.A), T);
+  const FlagOf<Real> stressed = (stress_factor > Real(0)) & !face;
+  if (any_true(stressed)) T = choose(stressed, T + stress_factor * (i.R + j.R), T);
   T.m[0][0] -= pi_ij; T.m[1][1] -= pi_ij; T.m[2][2] -= pi_ij;
   const Vec3<Real> tg = T * gt;
   acc += m_j * tg;

@@ -4,6 +4,7 @@
 #pragma once
 #include <cmath>
 
+#include "common/hd.hpp"
 #include "common/tensor.hpp"
 
 namespace impactsph {
@@ -41,8 +42,7 @@ ViscosityParams<Real> limited_viscosity_params(Real linear, Real quadratic, bool
 // slopes agree, 0 where they have opposite signs (r <= 0).
 template <class Real>
 IMPACTSPH_HD Real van_leer_limiter(Real r) {
-  if (!(r > Real(0))) return Real(0);
-  return Real(4) * r / ((Real(1) + r) * (Real(1) + r));
+  return choose(r > Real(0), Real(4) * r / ((Real(1) + r) * (Real(1) + r)), Real(0));
 }
 
 // The pair's velocity jump reconstructed to its midpoint (m/s), as finite-volume schemes take the jump their
@@ -56,17 +56,17 @@ IMPACTSPH_HD Real van_leer_limiter(Real r) {
 // exp(-((r/h - close_eta)/close_fold)^2), so that a pair being crushed meets the full viscosity.
 // grad_v is dv_a/dx_b (1/s); x_ij = x_i - x_j (m); h the pair smoothing length (m).
 template <class Real>
-IMPACTSPH_HD Vec3<Real> limited_midpoint_jump(const ViscosityParams<Real>& p, Vec3<Real> xij, Vec3<Real> vij,
+IMPACTSPH_HD Vec3<Real> limited_midpoint_jump(const ViscosityParams<ScalarOf<Real>>& p, Vec3<Real> xij, Vec3<Real> vij,
                                               const Mat3<Real>& grad_v_i, const Mat3<Real>& grad_v_j, Real h) {
+  using std::exp;
   const Vec3<Real> di = grad_v_i * xij, dj = grad_v_j * xij;
   const Real si = dot(di, xij), sj = dot(dj, xij);
-  Real phi = si * sj > Real(0) ? van_leer_limiter(si / sj) : Real(0);
+  const Real phi = choose(si * sj > Real(0), van_leer_limiter(si / sj), Real(0));
   const Real eta = norm(xij) / h;
-  if (eta < p.close_eta) {
-    const Real f = (eta - p.close_eta) / p.close_fold;
-    phi *= std::exp(-f * f);
-  }
-  return vij - (Real(0.5) * phi) * (di + dj);
+  const FlagOf<Real> close = eta < Real(p.close_eta);
+  if (!any_true(close)) return vij - (Real(0.5) * phi) * (di + dj);
+  const Real f = (eta - p.close_eta) / p.close_fold;
+  return vij - (Real(0.5) * choose(close, phi * exp(-f * f), phi)) * (di + dj);
 }
 
 // The jump the Monaghan term acts on (m/s). Off: the raw v_ij. Limited: the limited midpoint jump of a
@@ -77,23 +77,24 @@ IMPACTSPH_HD Vec3<Real> limited_midpoint_jump(const ViscosityParams<Real>& p, Ve
 // and the reference parted by 1e-6 of the velocity in one step on the copper bar at 0.8 mm).
 // grad_v is dv_a/dx_b (1/s); x_ij = x_i - x_j (m); h the pair smoothing length (m).
 template <class Real>
-IMPACTSPH_HD Vec3<Real> viscous_jump(const ViscosityParams<Real>& p, Vec3<Real> xij, Vec3<Real> vij,
+IMPACTSPH_HD Vec3<Real> viscous_jump(const ViscosityParams<ScalarOf<Real>>& p, Vec3<Real> xij, Vec3<Real> vij,
                                      const Mat3<Real>& grad_v_i, const Mat3<Real>& grad_v_j, Real h) {
   if (!p.limited) return vij;
   const Real closing = dot(vij, xij);
-  if (!(closing < Real(0))) return Vec3<Real>{Real(0), Real(0), Real(0)};
+  const Vec3<Real> none{Real(0), Real(0), Real(0)};
+  if (!any_true(closing < Real(0))) return none;
   const Vec3<Real> jump = limited_midpoint_jump(p, xij, vij, grad_v_i, grad_v_j, h);
-  return dot(jump, xij) > closing ? jump : vij;
+  return choose(closing < Real(0), choose(dot(jump, xij) > closing, jump, vij), none);
 }
 
 // xij = x_i - x_j, vij = v_i - v_j, h the pair smoothing length, c and rho the pair means.
 template <class Real>
-IMPACTSPH_HD Real monaghan_viscosity(const ViscosityParams<Real>& p, Vec3<Real> xij, Vec3<Real> vij, Real h, Real c_mean,
-                                     Real rho_mean) {
+IMPACTSPH_HD Real monaghan_viscosity(const ViscosityParams<ScalarOf<Real>>& p, Vec3<Real> xij, Vec3<Real> vij, Real h,
+                                     Real c_mean, Real rho_mean) {
   const Real vx = dot(vij, xij);
-  if (!(vx < Real(0))) return Real(0);
+  if (!any_true(vx < Real(0))) return Real(0);
   const Real phi = h * vx / (norm2(xij) + Real(0.01) * h * h);
-  return (-p.linear * c_mean * phi + p.quadratic * phi * phi) / rho_mean;
+  return choose(vx < Real(0), (-p.linear * c_mean * phi + p.quadratic * phi * phi) / rho_mean, Real(0));
 }
 
 // Bulk (volumetric) viscosity, the von Neumann-Richtmyer form of finite-element solid elements (LS-DYNA's

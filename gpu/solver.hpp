@@ -39,8 +39,9 @@ class GpuStepper : public Stepper {
   // on the device it synchronises after each phase.
   virtual void profile_phases(bool on) = 0;
   virtual std::vector<PhaseTime> phase_times() const = 0;
-  // With true the host build sums pass 1 over cluster pairs in SIMD lanes (gpu/solver_clusters.hpp); by
-  // default it takes each row's list entries in turn, as the CUDA kernels do. The CUDA build has the rows only.
+  // The host build sums the SPH pairs of both passes over cluster pairs in SIMD lanes (gpu/solver_clusters.hpp),
+  // the default; with false it takes each row's list entries in turn, as the CUDA kernels do. The CUDA build
+  // has the rows only.
   virtual void use_cluster_pairs(bool) {}
 };
 

@@ -1,4 +1,4 @@
-// The host build's pass 1 over cluster pairs (issue 18; in the backend's namespace: included at the end of
+// The host build's pair passes over cluster pairs (issue 18; in the backend's namespace: included at the end of
 // gpu/solver_impl.hpp, host build only). The CUDA kernels take each row's list entries one by one; on a CPU
 // the pair terms run kLanes neighbours at a time in SIMD lanes (common/lanes.hpp), which needs each field of
 // those neighbours in consecutive memory, not gathered from scattered slots (gpu/README.md).
@@ -12,11 +12,13 @@
 //     sharing sums add exact zeros. A particle's sums therefore depend only on the identities of the
 //     points near it, not on when the lists were built or on the order of the last sort, so a restart
 //     continues with the same bits (tests/test_gpu.cpp).
-//   * The fields pass 1 reads of a neighbour are packed by cluster lane at each evaluation (structure of
+//   * The fields each pass reads of a neighbour are packed by cluster lane at each evaluation (structure of
 //     arrays), so a lane load is one contiguous load.
-// The pair terms are those of the row path (gradient_row, the kernel, damaged_gradient_weight,
-// accumulate_correction, add_gradient_terms: common/), summed per lane and then over the lanes in order;
+// The pair terms are those of the row path (pass 1: gradient_row, the kernel, damaged_gradient_weight,
+// accumulate_correction, add_gradient_terms; pass 2: rate_row, artificial_stress_pair_factor,
+// add_momentum_energy_pair, damaged_delta_sph_term: common/), summed per lane and then over the lanes in order;
 // the order of the sums differs from the row path's, so the two agree to round-off (tests/test_pass_loops.cpp).
+// Penalty contact, rare and heavy, stays with the rows (solver_passes.hpp).
 #pragma once
 #include "gpu/solver_impl.hpp"
 
@@ -108,87 +110,140 @@ void Solver<Real>::build_clusters() {
 }
 
 // What pass 1 reads of the neighbours, by cluster lane; an empty lane sits far away with no volume.
+// Fills one Packed per cluster: fill(p, l, s) for each lane l of each cluster, s its sorted point (-1: none).
+template <class Real>
+template <class Packed, class Fill>
+void Solver<Real>::pack_by_lane(const char* name, std::vector<Packed>& packed, Fill fill) {
+  const std::int64_t clusters = static_cast<std::int64_t>(cluster_slot_.size()) / kLanes;
+  packed.resize(static_cast<std::size_t>(clusters));
+  const std::int32_t* cs = cluster_slot_.data();
+  Packed* out = packed.data();
+  launch<kFlush>(name, clusters, [=](std::int64_t c) {
+    for (int l = 0; l < kLanes; ++l) fill(out[c], l, cs[c * kLanes + l]);
+  });
+}
+
 template <class Real>
 void Solver<Real>::pack_cluster_points(const StagePoints<Real>& w) {
-  const std::int64_t clusters = static_cast<std::int64_t>(cluster_slot_.size()) / kLanes;
-  packed_.resize(static_cast<std::size_t>(clusters));
-  const std::int32_t* cs = cluster_slot_.data();
-  ClusterPoints<Real>* out = packed_.data();
   const MaterialParams<Real>* mats = raw(materials_);
   constexpr double kFar = 1e12;  // m: beyond every support, and r^2 still finite in float
-  launch<kFlush>("pack_clusters", clusters, [=](std::int64_t c) {
-    ClusterPoints<Real>& p = out[c];
-    for (int l = 0; l < kLanes; ++l) {
-      const std::int32_t s = cs[c * kLanes + l];
-      p.slot[l] = s;
-      if (s < 0) {
-        p.x[l] = kFar; p.y[l] = kFar; p.z[l] = kFar;
-        p.h[l] = 0; p.vol[l] = 0; p.vx[l] = 0; p.vy[l] = 0; p.vz[l] = 0; p.rho[l] = 0; p.damage[l] = 0;
-        p.body[l] = 0; p.walls[l] = 0; p.face[l] = 0;
-        continue;
-      }
-      p.x[l] = w.x[s].x; p.y[l] = w.x[s].y; p.z[l] = w.x[s].z;
-      p.h[l] = w.h[s]; p.vol[l] = w.vol[s]; p.vx[l] = w.v[s].x; p.vy[l] = w.v[s].y; p.vz[l] = w.v[s].z;
-      p.rho[l] = w.rho[s]; p.damage[l] = w.damage[s];
-      p.body[l] = w.body[s];
-      p.walls[l] = static_cast<std::int32_t>(w.image_walls[s]);
-      p.face[l] = compressive_crack_face(mats, w.mat[s], w.damage[s]) ? 1 : 0;
+  pack_by_lane("pack_clusters", packed_, [=](ClusterPoints<Real>& p, int l, std::int32_t s) {
+    p.slot[l] = s;
+    if (s < 0) {
+      p.x[l] = kFar; p.y[l] = kFar; p.z[l] = kFar;
+      p.h[l] = 0; p.vol[l] = 0; p.vx[l] = 0; p.vy[l] = 0; p.vz[l] = 0; p.rho[l] = 0; p.damage[l] = 0;
+      p.body[l] = 0; p.walls[l] = 0; p.face[l] = 0;
+      return;
     }
+    p.x[l] = w.x[s].x; p.y[l] = w.x[s].y; p.z[l] = w.x[s].z;
+    p.h[l] = w.h[s]; p.vol[l] = w.vol[s]; p.vx[l] = w.v[s].x; p.vy[l] = w.v[s].y; p.vz[l] = w.v[s].z;
+    p.rho[l] = w.rho[s]; p.damage[l] = w.damage[s];
+    p.body[l] = w.body[s];
+    p.walls[l] = static_cast<std::int32_t>(w.image_walls[s]);
+    p.face[l] = compressive_crack_face(mats, w.mat[s], w.damage[s]) ? 1 : 0;
   });
+}
+
+namespace cluster_lanes {
+template <class T> inline Mat3<Lanes<T>> load_mat(const T (*rows)[kLanes]) {
+  Mat3<Lanes<T>> a;
+  for (int q = 0; q < 9; ++q) a.m[q / 3][q % 3] = Lanes<T>::load(rows[q]);
+  return a;
+}
+template <class T> inline Mat3<Lanes<T>> load_sym(const T (*rows)[kLanes]) {
+  const Lanes<T> xx = Lanes<T>::load(rows[0]), yy = Lanes<T>::load(rows[1]), zz = Lanes<T>::load(rows[2]);
+  const Lanes<T> xy = Lanes<T>::load(rows[3]), yz = Lanes<T>::load(rows[4]), zx = Lanes<T>::load(rows[5]);
+  return Sym3<Lanes<T>>{xx, yy, zz, xy, yz, zx}.full();
+}
+template <class T> inline Mat3<Lanes<T>> broadcast(const Mat3<T>& a) {
+  Mat3<Lanes<T>> r;
+  for (int q = 0; q < 9; ++q) r.m[q / 3][q % 3] = Lanes<T>(a.m[q / 3][q % 3]);
+  return r;
+}
+template <class T> inline Vec3<Lanes<T>> broadcast(const Vec3<T>& a) { return {Lanes<T>(a.x), Lanes<T>(a.y), Lanes<T>(a.z)}; }
+
+// A row's point as the lane loops meet it, against the kLanes points of one cluster at a time.
+template <class Real>
+struct LanePair {
+  Vec3<Lanes<Real>> xij;      // x_i - x_j, m
+  Lanes<Real> hij, r;         // pair smoothing length and distance, m
+  LaneMask<Real> in, shares;  // within the support (not the point itself); also sharing sums
+  Vec3<Lanes<Real>> gw;       // grad_i W_ij where the pair shares sums, 0 elsewhere (1/m^4)
+};
+template <class Real>
+struct LaneRow {
+  using L = Lanes<Real>;
+  using LD = Lanes<double>;
+  using M = LaneMask<Real>;
+  using LI = typename M::V;
+  LD x, y, z;
+  L h;
+  LI penalty, let_go, self;
+  LaneRow(const Vec3p& xi, Real hi, std::int32_t penalty_bits, unsigned let_go_i, std::int64_t s)
+      : x(xi.x), y(xi.y), z(xi.z), h(hi), penalty(LI{} + static_cast<LaneInt<Real>>(penalty_bits)),
+        let_go(LI{} + static_cast<LaneInt<Real>>(let_go_i)), self(LI{} + static_cast<LaneInt<Real>>(s)) {}
+  // The row's pairs with cluster p (pair_geometry, shares_sums of common/stages.hpp, lane by lane): within
+  // the support and not the row's own point (the list has no self pair); sharing sums where also not in
+  // penalty contact and not an image behind a wall the row let go of. Inlined: GCC otherwise calls it from
+  // pass 2's loop and returns the lanes through memory (pass 2 in double 8.0 instead of 6.9 ms on the block).
+  template <class Kernel>
+  __attribute__((always_inline)) LanePair<Real> pair(const Kernel& kernel, const ClusterPoints<Real>& p) const {
+    LanePair<Real> q;
+    q.xij = lanes_cast<Real>(Vec3<LD>{x - LD::load(p.x), y - LD::load(p.y), z - LD::load(p.z)});
+    q.hij = L(Real(0.5)) * (h + L::load(p.h));
+    q.r = norm(q.xij);
+    q.in = (q.r < kernel_support(q.hij)) & M{load_lane_ints<Real>(p.slot) != self};
+    const M in_penalty{((penalty >> load_lane_ints<Real>(p.body)) & 1) != 0};
+    const M behind{(load_lane_ints<Real>(p.walls) & let_go) != 0};
+    q.shares = q.in & !(in_penalty | behind);
+    q.gw = choose(q.shares, kernel.grad_factor(q.r, q.hij), L(0)) * q.xij;
+    return q;
+  }
+};
+}  // namespace cluster_lanes
+
+template <class Real>
+ClusterRows<Real> Solver<Real>::cluster_rows() {
+  return {raw(slot_of_), raw(list_offset_), row_cluster_end_.data(), row_cluster_.data(), packed_.data(),
+          penalty_bits_.data()};
 }
 
 // Pass 1 of every real over its clusters (add_gradient_neighbour's terms, kLanes neighbours at a time).
 template <class Real>
 template <class Kernel>
 void Solver<Real>::pass1_clusters(const Kernel& kernel, const StagePoints<Real>& w) {
+  using namespace cluster_lanes;
   using L = Lanes<Real>;
-  using LD = Lanes<double>;
   using M = LaneMask<Real>;
   using LI = typename M::V;
   pack_cluster_points(w);
-  const std::int64_t n = n_;
-  const std::int32_t* slot = raw(slot_of_);
-  const std::int64_t* off = raw(list_offset_);
-  const std::int32_t* rc = row_cluster_.data();
-  const std::int64_t* rc_end = row_cluster_end_.data();
-  const ClusterPoints<Real>* packed = packed_.data();
-  const std::int32_t* penalty_bits = penalty_bits_.data();
+  const ClusterRows<Real> cr = cluster_rows();
   const MaterialParams<Real>* mats = raw(materials_);
   const StageParams<Real> prm = params_;
   Mat3<Real>* grad_v = raw(grad_v_);
   std::int32_t* fell = raw(fallback_);
   std::int32_t* ncount = raw(neighbour_count_);
-  launch<kFlush>("pass1_clusters", n, [=](std::int64_t i) {
-    const std::int64_t s = slot[i];
+  launch<kFlush>("pass1_clusters", n_, [=](std::int64_t i) {
+    const std::int64_t s = cr.slot[i];
     const GradientRow<Real> row = gradient_row(w, mats, s);
-    const LD xi(row.x.x), yi(row.x.y), zi(row.x.z);
-    const L hi(row.h), damage_i(row.damage), rho_i(row.rho);
-    const Vec3<L> v_i{L(row.v.x), L(row.v.y), L(row.v.z)};
-    const LI penalty_i = LI{} + static_cast<LaneInt<Real>>(penalty_bits[row.body]);
-    const LI let_go_i = LI{} + static_cast<LaneInt<Real>>(row.let_go);
-    const LI self = LI{} + static_cast<LaneInt<Real>>(s);
+    const LaneRow<Real> lane_row(row.x, row.h, cr.penalty_bits[row.body], row.let_go, s);
+    const L damage_i(row.damage), rho_i(row.rho);
+    const Vec3<L> v_i = broadcast(row.v);
     const M face_i{LI{} + (row.face ? -1 : 0)};
     Mat3<L> L_sum = Mat3<L>::zero(), L_damaged = Mat3<L>::zero(), G = Mat3<L>::zero();
     Vec3<L> grad_rho{L(0), L(0), L(0)};
     LI count{};
-    for (std::int64_t k = off[i]; k < rc_end[i]; ++k) {
-      const ClusterPoints<Real>& p = packed[rc[k]];
-      const Vec3<L> xij = lanes_cast<Real>(Vec3<LD>{xi - LD::load(p.x), yi - LD::load(p.y), zi - LD::load(p.z)});
-      const L hij = L(Real(0.5)) * (hi + L::load(p.h));
-      const L r = norm(xij);
-      const M in = (r < kernel_support(hij)) & M{load_lane_ints<Real>(p.slot) != self};  // the list has no self pair
-      count -= in.v;
-      const M penalty{((penalty_i >> load_lane_ints<Real>(p.body)) & 1) != 0};
-      const M behind{(load_lane_ints<Real>(p.walls) & let_go_i) != 0};
-      const M shares = in & !(penalty | behind);
-      const Vec3<L> gw = choose(shares, kernel.grad_factor(r, hij), L(0)) * xij;
+    for (std::int64_t k = cr.first[i]; k < cr.end[i]; ++k) {
+      const ClusterPoints<Real>& p = cr.packed[cr.cluster[k]];
+      const LanePair<Real> q = lane_row.pair(kernel, p);
+      count -= q.in.v;
       const M crack_face = face_i | M{load_lane_ints<Real>(p.face) != 0};
       const L vol_j = L::load(p.vol);
       const L vf = damaged_gradient_weight(vol_j, damage_i, L::load(p.damage), crack_face);
-      accumulate_correction(L_sum, vol_j, gw, xij);
-      accumulate_correction(L_damaged, vf, gw, xij);
+      accumulate_correction(L_sum, vol_j, q.gw, q.xij);
+      accumulate_correction(L_damaged, vf, q.gw, q.xij);
       const Vec3<L> v_ji = Vec3<L>{L::load(p.vx), L::load(p.vy), L::load(p.vz)} - v_i;
-      add_gradient_terms(G, grad_rho, vf, gw, v_ji, L::load(p.rho) - rho_i);
+      add_gradient_terms(G, grad_rho, vf, q.gw, v_ji, L::load(p.rho) - rho_i);
     }
     const GradientSums<Real> sums{lane_sum(L_sum), lane_sum(L_damaged), lane_sum(G), lane_sum(grad_rho), true};
     const CorrectedGradients<Real> cg = finish_gradient_row(prm, w, s, sums);
@@ -197,6 +252,92 @@ void Solver<Real>::pass1_clusters(const Kernel& kernel, const StagePoints<Real>&
     std::int32_t c = 0;
     for (int l = 0; l < kLanes; ++l) c += static_cast<std::int32_t>(count[l]);
     ncount[i] = c;
+  });
+}
+
+// What pass 2 reads of the neighbours beyond packed_, by cluster lane (after pass 1 and the ghosts' mirrored
+// gradients); an empty lane has no material and zero fields.
+template <class Real>
+void Solver<Real>::pack_cluster_rates(const StagePoints<Real>& w) {
+  const bool art = params_.art.on(), limited = params_.visc.limited;
+  pack_by_lane("pack_cluster_rates", packed_rates_, [=](ClusterRates<Real>& p, int l, std::int32_t s) {
+    const Sym3<Real> A = s < 0 ? Sym3<Real>::zero() : w.A[s];
+    const Sym3<Real> R = s < 0 || !art ? Sym3<Real>::zero() : w.R[s];
+    const Real sym[2][6] = {{A.xx, A.yy, A.zz, A.xy, A.yz, A.zx}, {R.xx, R.yy, R.zz, R.xy, R.yz, R.zx}};
+    for (int q = 0; q < 6; ++q) {
+      p.A[q][l] = sym[0][q];
+      p.R[q][l] = sym[1][q];
+    }
+    const Mat3<Real> linv = s < 0 ? Mat3<Real>::zero() : w.linv[s];
+    const Mat3<Real> gv = s < 0 || !limited ? Mat3<Real>::zero() : w.grad_v[s];
+    for (int q = 0; q < 9; ++q) {
+      p.linv[q][l] = linv.m[q / 3][q % 3];
+      p.grad_v[q][l] = gv.m[q / 3][q % 3];
+    }
+    const Vec3<Real> gr = s < 0 ? Vec3<Real>{0, 0, 0} : w.grad_rho[s];
+    p.grad_rho[0][l] = gr.x; p.grad_rho[1][l] = gr.y; p.grad_rho[2][l] = gr.z;
+    p.c[l] = s < 0 ? Real(0) : w.c[s];
+    p.av[l] = s < 0 ? Real(0) : w.av[s];
+    p.m[l] = s < 0 ? Real(0) : w.m[s];
+    p.mat[l] = s < 0 ? -1 : w.mat[s];
+  });
+}
+
+
+// Pass 2's SPH pair sums of every real over its clusters (add_rate_neighbour's terms, kLanes neighbours at a
+// time), kRateSums a row into sums; penalty contact and the rates follow in the row loop (solver_passes.hpp).
+template <class Real>
+template <class Kernel>
+void Solver<Real>::pass2_clusters(const Kernel& kernel, const StagePoints<Real>& w, Real* sums) {
+  using namespace cluster_lanes;
+  using L = Lanes<Real>;
+  using M = LaneMask<Real>;
+  using LI = typename M::V;
+  pack_cluster_rates(w);
+  const ClusterRows<Real> cr = cluster_rows();
+  const ClusterRates<Real>* rates = packed_rates_.data();
+  const MaterialParams<Real>* mats = raw(materials_);
+  const StageParams<Real> prm = params_;
+  const bool art = prm.art.on(), limited = prm.visc.limited;
+  launch<kFlush>("pass2_clusters", n_, [=](std::int64_t i) {
+    const std::int64_t s = cr.slot[i];
+    const RateRow<Real> row = rate_row(prm, w, mats, s);
+    const LaneRow<Real> lane_row(row.x, row.h, cr.penalty_bits[row.body], row.let_go, s);
+    const L damage_i(row.side.damage), rho_i(row.side.rho);
+    const Vec3<L> v_i = broadcast(row.v), grad_rho_i = broadcast(row.grad_rho);
+    const PairSide<L> side_i{broadcast(row.side.A), broadcast(row.side.l_inverse), damage_i, L(row.side.av_factor),
+                             L(row.side.sound_speed), rho_i, M{LI{} + (row.side.crack_face ? -1 : 0)},
+                             broadcast(row.side.R), broadcast(row.side.grad_v)};
+    const LI mat_i = LI{} + static_cast<LaneInt<Real>>(row.mat);
+    Vec3<L> acc{L(0), L(0), L(0)};
+    L de(0), diffusion(0);
+    for (std::int64_t k = cr.first[i]; k < cr.end[i]; ++k) {
+      const ClusterPoints<Real>& p = cr.packed[cr.cluster[k]];
+      const ClusterRates<Real>& q = rates[cr.cluster[k]];
+      const LanePair<Real> pair = lane_row.pair(kernel, p);
+      const Vec3<L>& xij = pair.xij;
+      const L& hij = pair.hij;
+      const M& shares = pair.shares;
+      const Vec3<L>& gw = pair.gw;
+      const L damage_j = L::load(p.damage), rho_j = L::load(p.rho);
+      const PairSide<L> side_j{load_sym(q.A), load_mat(q.linv), damage_j, L::load(q.av), L::load(q.c), rho_j,
+                               M{load_lane_ints<Real>(p.face) != 0}, art ? load_sym(q.R) : Mat3<L>::zero(),
+                               limited ? load_mat(q.grad_v) : Mat3<L>::zero()};
+      const L stress_factor = artificial_stress_pair_factor(prm.art, kernel.kind(), pair.r, hij);
+      const Vec3<L> vij = v_i - Vec3<L>{L::load(p.vx), L::load(p.vy), L::load(p.vz)};
+      Vec3<L> acc_j{L(0), L(0), L(0)};
+      L de_j(0);
+      add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vij, hij, L::load(q.m), stress_factor, acc_j, de_j);
+      acc += choose(shares, acc_j, Vec3<L>{L(0), L(0), L(0)});
+      de += choose(shares, de_j, L(0));
+      const Vec3<L> grad_rho_j{L::load(q.grad_rho[0]), L::load(q.grad_rho[1]), L::load(q.grad_rho[2])};
+      const L d = damaged_delta_sph_term(damage_i, damage_j, L::load(p.vol), rho_i, rho_j, xij, grad_rho_i, grad_rho_j, gw);
+      diffusion += choose(shares & M{load_lane_ints<Real>(q.mat) == mat_i}, d, L(0));
+    }
+    Real* out = sums + i * kRateSums;
+    out[0] = lane_sum(acc.x); out[1] = lane_sum(acc.y); out[2] = lane_sum(acc.z);
+    out[3] = lane_sum(de);
+    out[4] = lane_sum(diffusion);
   });
 }
 

@@ -69,6 +69,30 @@ struct alignas(64) ClusterPoints {
   std::int32_t slot[kLanes], body[kLanes], walls[kLanes], face[kLanes];  // sorted point (-1: none), body,
                                                                          // image walls, crack face
 };
+// What pass 2 reads of the kLanes points of a cluster beyond ClusterPoints, lane by lane (after pass 1 and the
+// ghosts' mirrored gradients). The artificial stress and the velocity gradient are packed only where the
+// pair terms read them (artificial stress on; limited viscosity).
+template <class Real>
+struct alignas(64) ClusterRates {
+  Real A[6][kLanes];         // (S - P I) / rho^2 as Sym3 (xx, yy, zz, xy, yz, zx), m^5 kg^-1 s^-2
+  Real R[6][kLanes];         // artificial stress, as A
+  Real linv[9][kLanes];      // correction L^-1, row-major
+  Real grad_v[9][kLanes];    // dv_a/dx_b (1/s), row-major
+  Real grad_rho[3][kLanes];  // kg/m^4
+  Real c[kLanes], av[kLanes], m[kLanes];  // sound speed (m/s), viscosity factor, mass (kg)
+  std::int32_t mat[kLanes];  // material (-1: no point)
+};
+// What the lane loops read of each real's row: its slot, its clusters cluster[first[i] .. end[i]) (where its
+// list entries were), the packed clusters, and each body's penalty-contact bits.
+template <class Real>
+struct ClusterRows {
+  const std::int32_t* slot;
+  const std::int64_t* first;
+  const std::int64_t* end;
+  const std::int32_t* cluster;
+  const ClusterPoints<Real>* packed;
+  const std::int32_t* penalty_bits;
+};
 #endif
 
 template <class Real>
@@ -485,17 +509,21 @@ class Solver final : public GpuStepper {
 
 #if !defined(__CUDACC__)
  public:
-  // The host build's pass 1 over cluster pairs (gpu/solver_clusters.hpp); off (the default), it takes the rows
-  // as the CUDA kernels do.
+  // The host build's pair passes over cluster pairs (gpu/solver_clusters.hpp), the default; off, they take the
+  // rows as the CUDA kernels do.
   void use_cluster_pairs(bool on) override {
     cluster_pairs_ = on;
     sorted_ = false;  // the next step sorts, and builds the clusters
   }
   void set_cluster_ranks(const Scene& scene);
   void build_clusters();
+  template <class Packed, class Fill> void pack_by_lane(const char* name, std::vector<Packed>& packed, Fill fill);
   void pack_cluster_points(const StagePoints<Real>& w);
   template <class Kernel> void pass1_clusters(const Kernel& kernel, const StagePoints<Real>& w);
-  bool cluster_pairs_ = false;
+  void pack_cluster_rates(const StagePoints<Real>& w);
+  ClusterRows<Real> cluster_rows();
+  template <class Kernel> void pass2_clusters(const Kernel& kernel, const StagePoints<Real>& w, Real* sums);
+  bool cluster_pairs_ = true;
   bool cluster_pairs_possible_ = true;  // fewer than 31 bodies (one bit each in a lane)
   std::vector<std::int32_t> cluster_rank_;     // per scene index: place in the Morton order of the scene
   std::vector<std::int32_t> penalty_bits_;     // per body: bit b set where it is in penalty contact with body b
@@ -504,6 +532,8 @@ class Solver final : public GpuStepper {
   std::vector<std::int32_t> row_cluster_;      // row i's clusters: [list_offset_[i], row_cluster_end_[i])
   std::vector<std::int64_t> row_cluster_end_;
   std::vector<ClusterPoints<Real>> packed_;    // per cluster: what pass 1 reads of its points
+  std::vector<ClusterRates<Real>> packed_rates_;  // per cluster: what pass 2 reads beyond packed_
+  std::vector<Real> pair_sums_;                // per real: pass 2's kRateSums sums over the clusters
 #endif
 };
 

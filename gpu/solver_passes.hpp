@@ -32,6 +32,9 @@ template <class Real> IMPACTSPH_HD GradientSums<Real> unflatten_gradient_sums(co
   return g;
 }
 
+// The pass 2 pair sums of a particle: acceleration x, y, z (m/s^2); energy rate (J/kg/s); delta-SPH diffusion.
+constexpr int kRateSums = 5;
+
 // One evaluation of the rates with the kernel fixed at compile time, so the pair loops carry no select
 // between kernels. In the pair loops (IMPACTSPH_SIMD_SUMS, launch.hpp) the only values carried from one
 // neighbour to the next are sums, kept as arrays of Reals; penalty contact, rare and heavy, has a loop of
@@ -146,21 +149,35 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
   Sym3<Real>* rS = raw(rate_S_);
   Real* reps = raw(strain_rate_);
   Real* rcp = raw(contact_power_);
+#if !defined(__CUDACC__)
+  const Real* cluster_sums = nullptr;  // the SPH pairs' sums taken over cluster pairs, when they are
+  if (clusters) {
+    pair_sums_.resize(static_cast<std::size_t>(n * kRateSums));
+    pass2_clusters(kernel, w, pair_sums_.data());
+    cluster_sums = pair_sums_.data();
+  }
+#else
+  const Real* cluster_sums = nullptr;
+#endif
   launch<kFlush>("pass2", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
     const std::int64_t s = slot[i];
     const RateRow<Real> row = rate_row(prm, w, mats, s);
     const std::int64_t k0 = list_offset[i], k1 = list_offset[i + 1];
-    Real sum[5] = {};  // acceleration x, y, z; energy rate; delta-SPH diffusion
-    IMPACTSPH_SIMD_SUMS(sum[:5])
-    for (std::int64_t k = k0; k < k1; ++k) {
-      Vec3<Real> acc{0, 0, 0};
-      Real de = 0, diffusion = 0;
-      if (add_rate_neighbour(kernel, prm, w, mats, row, list[k], acc, de, diffusion)) {
-        sum[0] += acc.x;
-        sum[1] += acc.y;
-        sum[2] += acc.z;
-        sum[3] += de;
-        sum[4] += diffusion;
+    Real sum[kRateSums] = {};
+    if (cluster_sums)
+      for (int q = 0; q < kRateSums; ++q) sum[q] = cluster_sums[i * kRateSums + q];
+    else {
+      IMPACTSPH_SIMD_SUMS(sum[:kRateSums])
+      for (std::int64_t k = k0; k < k1; ++k) {
+        Vec3<Real> acc{0, 0, 0};
+        Real de = 0, diffusion = 0;
+        if (add_rate_neighbour(kernel, prm, w, mats, row, list[k], acc, de, diffusion)) {
+          sum[0] += acc.x;
+          sum[1] += acc.y;
+          sum[2] += acc.z;
+          sum[3] += de;
+          sum[4] += diffusion;
+        }
       }
     }
     Vec3<Real> contact{0, 0, 0};

@@ -1,13 +1,14 @@
 // The reference's pass loops (reference/solver.cpp) drop the Verlet skin before they take a pair, keep the
 // pairs of pass 1 for pass 2 and split each row into its SPH pairs and its penalty contact pairs. The gpu
-// port's host build (double) takes pass 1 over cluster pairs in SIMD lanes (gpu/solver_clusters.hpp) or, as
-// the CUDA kernels do, every list entry through the unfiltered common/stages.hpp add_gradient_neighbour; pass
-// 2 every entry through add_rate_neighbour / add_contact_neighbour. They differ only in the order of their
+// port's host build (double) takes the SPH pairs of both passes over cluster pairs in SIMD lanes
+// (gpu/solver_clusters.hpp) or, as the CUDA kernels do, every list entry through the unfiltered
+// common/stages.hpp add_gradient_neighbour and add_rate_neighbour; penalty contact every entry through
+// add_contact_neighbour. They differ only in the order of their
 // sums, so one step of each from the same state must agree to round-off: a pair that the prefilter or a lane
 // mask drops, or one sent to the wrong sum, moves a rate by a whole pair term, many orders above the bound.
 // The scenes are set up so that every branch of the loops has pairs: penalty contact, failed and partly
 // damaged particles (crack faces), mirror images, a wall that some particles let go of, the artificial
-// stress, variable smoothing lengths.
+// stress, the limited viscosity, variable smoothing lengths.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -73,7 +74,7 @@ void expect_same_step_as(const Scene& scene, const std::string& what, bool clust
     EXPECT_LE(g.gap, 1e-9 * g.increment);
   }
 }
-// The port both ways: its host build's pass 1 over cluster pairs in SIMD lanes (gpu/solver_clusters.hpp),
+// The port both ways: its host build's pair passes over cluster pairs in SIMD lanes (gpu/solver_clusters.hpp),
 // and over the rows entry by entry as the CUDA kernels take them.
 void expect_same_step(const Scene& scene, const std::string& what) {
   expect_same_step_as(scene, what + ", cluster pairs", true);
@@ -170,6 +171,16 @@ TEST(ReferencePassLoops, WallLetGoAsTheUnfilteredLoops) {
   ASSERT_GT(letting_go, 5u);
   disturb(p, 0.5e-3, 0.5, 0.0, 0.0);
   expect_same_step(s, "wall-rebound");
+}
+
+// The copper Taylor bar at 0.8 mm on its rigid wall (h = 2 dx, the limited viscosity: the midpoint jump with
+// van Leer's limiter, faded within one spacing): the pairs of nearest neighbours, disturbed by up to 5 % of
+// the spacing, lie on both sides of the close-approach radius.
+TEST(ReferencePassLoops, TaylorBarWithTheLimitedViscosityAsTheUnfilteredLoops) {
+  Scene s = build_scene(load_case_file(std::string(IMPACTSPH_CASES) + "/taylor-bar/case.toml", {}, "0.8 mm"));
+  ASSERT_TRUE(s.spec.numerics.viscosity.limited);
+  disturb(s.particles, 0.8e-3, 20.0, 2e-3, 30e6);
+  expect_same_step(s, "taylor-bar at 0.8 mm");
 }
 
 }  // namespace
