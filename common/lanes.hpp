@@ -1,8 +1,9 @@
-// Lanes<T>: kLanes values of T held in one SIMD register (a GCC vector type), for the pair loops of the gpu
-// port's host build over cluster pairs (gpu/solver_clusters.hpp). The common/ pair functions are templates on Real;
-// with Real = Lanes<T> each lane is one neighbour, and the overloads below (choose, any_true, min_of, max_of,
-// sqrt, norm, exp) stand where the scalar functions compare, take a root or an exponential. A comparison
-// gives a LaneMask. Host only.
+// Lanes<T>: kLanes<T> values of T held in one 512-bit SIMD register (a GCC vector type: 8 doubles or 16 floats),
+// for the pair loops of the gpu port's host build over cluster pairs (gpu/solver_clusters.hpp). The common/
+// pair functions are templates on Real; with Real = Lanes<T> each lane is one neighbour, and the overloads
+// below (choose, any_true, min_of, max_of, sqrt, norm, exp) stand where the scalar functions compare, take a
+// root or an exponential. A comparison gives a LaneMask. Lanes<double, 16> holds the double positions of 16
+// float lanes (two registers). Host only.
 #pragma once
 #if defined(__CUDACC__)
 #error "common/lanes.hpp is for host builds only"
@@ -19,24 +20,26 @@
 
 namespace impactsph {
 
-inline constexpr int kLanes = 8;
+// Values of T in one 512-bit register.
+template <class T> inline constexpr int kLanes = static_cast<int>(64 / sizeof(T));
 
 // The integer lane type of the same width as T, which GCC's vector comparisons return.
 template <class T> using LaneInt = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
 
 // One flag per lane, as GCC vector comparisons give it: all bits set (true) or none (false).
-template <class T>
+template <class T, int N = kLanes<T>>
 struct LaneMask {
-  typedef LaneInt<T> V __attribute__((vector_size(kLanes * sizeof(LaneInt<T>))));
+  typedef LaneInt<T> V __attribute__((vector_size(N * sizeof(LaneInt<T>))));
   V v;
   friend LaneMask operator&(LaneMask a, LaneMask b) { return {a.v & b.v}; }
   friend LaneMask operator|(LaneMask a, LaneMask b) { return {a.v | b.v}; }
   friend LaneMask operator!(LaneMask a) { return {~a.v}; }
 };
 
-template <class T>
+template <class T, int N = kLanes<T>>
 struct Lanes {
-  typedef T V __attribute__((vector_size(kLanes * sizeof(T))));
+  typedef T V __attribute__((vector_size(N * sizeof(T))));
+  using Mask = LaneMask<T, N>;
   V v;
   Lanes() = default;
   Lanes(T s) : v(V{} + s) {}  // every lane s
@@ -55,95 +58,97 @@ struct Lanes {
   Lanes& operator+=(Lanes b) { v += b.v; return *this; }
   Lanes& operator-=(Lanes b) { v -= b.v; return *this; }
   Lanes& operator*=(Lanes b) { v *= b.v; return *this; }
-  friend LaneMask<T> operator<(Lanes a, Lanes b) { return {a.v < b.v}; }
-  friend LaneMask<T> operator<=(Lanes a, Lanes b) { return {a.v <= b.v}; }
-  friend LaneMask<T> operator>(Lanes a, Lanes b) { return {a.v > b.v}; }
-  friend LaneMask<T> operator>=(Lanes a, Lanes b) { return {a.v >= b.v}; }
-  friend LaneMask<T> operator==(Lanes a, Lanes b) { return {a.v == b.v}; }
+  friend Mask operator<(Lanes a, Lanes b) { return {a.v < b.v}; }
+  friend Mask operator<=(Lanes a, Lanes b) { return {a.v <= b.v}; }
+  friend Mask operator>(Lanes a, Lanes b) { return {a.v > b.v}; }
+  friend Mask operator>=(Lanes a, Lanes b) { return {a.v >= b.v}; }
+  friend Mask operator==(Lanes a, Lanes b) { return {a.v == b.v}; }
 };
 
-template <class T> struct ScalarType<Lanes<T>> { using type = T; };
+template <class T, int N> struct ScalarType<Lanes<T, N>> { using type = T; };
 
-template <class T>
-struct Constants<Lanes<T>> {
-  static inline const Lanes<T> pi = Lanes<T>(Constants<T>::pi);
+template <class T, int N>
+struct Constants<Lanes<T, N>> {
+  static inline const Lanes<T, N> pi = Lanes<T, N>(Constants<T>::pi);
 };
 
-// kLanes integers from p, widened to the lane width of T (for masks against LaneMask<T>).
-template <class T> inline typename LaneMask<T>::V load_lane_ints(const std::int32_t* p) {
-  typedef std::int32_t V32 __attribute__((vector_size(kLanes * sizeof(std::int32_t))));
+// N integers from p, widened to the lane width of T (for masks against LaneMask<T, N>).
+template <class T, int N = kLanes<T>> inline typename LaneMask<T, N>::V load_lane_ints(const std::int32_t* p) {
+  typedef std::int32_t V32 __attribute__((vector_size(N * sizeof(std::int32_t))));
   V32 a;
   std::memcpy(&a, p, sizeof(V32));
-  return __builtin_convertvector(a, typename LaneMask<T>::V);
+  return __builtin_convertvector(a, typename LaneMask<T, N>::V);
 }
 
 // Lane by lane a where m, else b: the lane form of `m ? a : b`.
-template <class T> inline Lanes<T> choose(LaneMask<T> m, Lanes<T> a, Lanes<T> b) { return Lanes<T>(m.v ? a.v : b.v); }
-template <class T> inline Vec3<Lanes<T>> choose(LaneMask<T> m, const Vec3<Lanes<T>>& a, const Vec3<Lanes<T>>& b) {
+template <class T, int N> inline Lanes<T, N> choose(LaneMask<T, N> m, Lanes<T, N> a, Lanes<T, N> b) {
+  return Lanes<T, N>(m.v ? a.v : b.v);
+}
+template <class T, int N>
+inline Vec3<Lanes<T, N>> choose(LaneMask<T, N> m, const Vec3<Lanes<T, N>>& a, const Vec3<Lanes<T, N>>& b) {
   return {choose(m, a.x, b.x), choose(m, a.y, b.y), choose(m, a.z, b.z)};
 }
-template <class T> inline Mat3<Lanes<T>> choose(LaneMask<T> m, const Mat3<Lanes<T>>& a, const Mat3<Lanes<T>>& b) {
-  Mat3<Lanes<T>> r;
+template <class T, int N>
+inline Mat3<Lanes<T, N>> choose(LaneMask<T, N> m, const Mat3<Lanes<T, N>>& a, const Mat3<Lanes<T, N>>& b) {
+  Mat3<Lanes<T, N>> r;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) r.m[i][j] = choose(m, a.m[i][j], b.m[i][j]);
   return r;
 }
-template <class T> inline bool any_true(LaneMask<T> m) {
-  for (int k = 0; k < kLanes; ++k)
+template <class T, int N> inline bool any_true(LaneMask<T, N> m) {
+  for (int k = 0; k < N; ++k)
     if (m.v[k]) return true;
   return false;
 }
-template <class T> inline Lanes<T> min_of(Lanes<T> a, Lanes<T> b) { return choose(a < b, a, b); }
-template <class T> inline Lanes<T> max_of(Lanes<T> a, Lanes<T> b) { return choose(a > b, a, b); }
+template <class T, int N> inline Lanes<T, N> min_of(Lanes<T, N> a, Lanes<T, N> b) { return choose(a < b, a, b); }
+template <class T, int N> inline Lanes<T, N> max_of(Lanes<T, N> a, Lanes<T, N> b) { return choose(a > b, a, b); }
 
-// Square root of each lane, correctly rounded as std::sqrt is.
-inline Lanes<float> sqrt(Lanes<float> a) {
-#if defined(__AVX__)
-  return Lanes<float>(reinterpret_cast<Lanes<float>::V>(_mm256_sqrt_ps(reinterpret_cast<__m256>(a.v))));
-#else
-  Lanes<float> r;
-  for (int k = 0; k < kLanes; ++k) r.v[k] = std::sqrt(a.v[k]);
-  return r;
-#endif
-}
-inline Lanes<double> sqrt(Lanes<double> a) {
+// Square root of each lane, correctly rounded as std::sqrt is (one instruction where the lanes fill a
+// 512-bit register and the machine has AVX-512; the masked form, as GCC 12 warns on _mm512_sqrt_pd).
+template <class T, int N> inline Lanes<T, N> sqrt(Lanes<T, N> a) {
 #if defined(__AVX512F__)
-  const __m512d x = reinterpret_cast<__m512d>(a.v);
-  return Lanes<double>(reinterpret_cast<Lanes<double>::V>(_mm512_mask_sqrt_pd(x, 0xff, x)));  // (GCC 12 warns
-                                                                                                  // on _mm512_sqrt_pd)
-#else
-  Lanes<double> r;
-  for (int k = 0; k < kLanes; ++k) r.v[k] = std::sqrt(a.v[k]);
-  return r;
+  if constexpr (sizeof(a.v) == 64 && std::is_same_v<T, double>) {
+    const __m512d x = reinterpret_cast<__m512d>(a.v);
+    return Lanes<T, N>(reinterpret_cast<typename Lanes<T, N>::V>(_mm512_mask_sqrt_pd(x, 0xff, x)));
+  }
+  if constexpr (sizeof(a.v) == 64 && std::is_same_v<T, float>) {
+    const __m512 x = reinterpret_cast<__m512>(a.v);
+    return Lanes<T, N>(reinterpret_cast<typename Lanes<T, N>::V>(_mm512_mask_sqrt_ps(x, 0xffff, x)));
+  }
 #endif
+  Lanes<T, N> r;
+  for (int k = 0; k < N; ++k) r.v[k] = std::sqrt(a.v[k]);
+  return r;
 }
-template <class T> inline Lanes<T> norm(Vec3<Lanes<T>> a) { return sqrt(dot(a, a)); }
+template <class T, int N> inline Lanes<T, N> norm(Vec3<Lanes<T, N>> a) { return sqrt(dot(a, a)); }
 
 // e^x of each lane by std::exp, lane by lane: the same bits as the scalar path (the limited viscosity's
 // close-approach fade, common/viscosity.hpp, the one exponential of the pair terms).
-template <class T> inline Lanes<T> exp(Lanes<T> a) {
-  Lanes<T> r;
-  for (int k = 0; k < kLanes; ++k) r.v[k] = std::exp(a.v[k]);
+template <class T, int N> inline Lanes<T, N> exp(Lanes<T, N> a) {
+  Lanes<T, N> r;
+  for (int k = 0; k < N; ++k) r.v[k] = std::exp(a.v[k]);
   return r;
 }
 
 // Each lane rounded to another type (double positions to the Real of the pair terms).
-template <class To, class From> inline Lanes<To> lanes_cast(Lanes<From> a) {
+template <class To, class From, int N> inline Lanes<To, N> lanes_cast(Lanes<From, N> a) {
   if constexpr (std::is_same_v<To, From>) return a;
-  else return Lanes<To>(__builtin_convertvector(a.v, typename Lanes<To>::V));
+  else return Lanes<To, N>(__builtin_convertvector(a.v, typename Lanes<To, N>::V));
 }
-template <class To, class From> inline Vec3<Lanes<To>> lanes_cast(Vec3<Lanes<From>> a) {
+template <class To, class From, int N> inline Vec3<Lanes<To, N>> lanes_cast(Vec3<Lanes<From, N>> a) {
   return {lanes_cast<To>(a.x), lanes_cast<To>(a.y), lanes_cast<To>(a.z)};
 }
 
-// The lanes summed in order 0, 1, ..., kLanes - 1 (a fixed order: the same bits on every run).
-template <class T> inline T lane_sum(Lanes<T> a) {
+// The lanes summed in order 0, 1, ..., N - 1 (a fixed order: the same bits on every run).
+template <class T, int N> inline T lane_sum(Lanes<T, N> a) {
   T s = a.v[0];
-  for (int k = 1; k < kLanes; ++k) s += a.v[k];
+  for (int k = 1; k < N; ++k) s += a.v[k];
   return s;
 }
-template <class T> inline Vec3<T> lane_sum(const Vec3<Lanes<T>>& a) { return {lane_sum(a.x), lane_sum(a.y), lane_sum(a.z)}; }
-template <class T> inline Mat3<T> lane_sum(const Mat3<Lanes<T>>& a) {
+template <class T, int N> inline Vec3<T> lane_sum(const Vec3<Lanes<T, N>>& a) {
+  return {lane_sum(a.x), lane_sum(a.y), lane_sum(a.z)};
+}
+template <class T, int N> inline Mat3<T> lane_sum(const Mat3<Lanes<T, N>>& a) {
   Mat3<T> r;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) r.m[i][j] = lane_sum(a.m[i][j]);

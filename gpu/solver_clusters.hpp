@@ -79,7 +79,7 @@ void Solver<Real>::build_clusters() {
   std::vector<std::pair<std::int64_t, std::int32_t>> keyed(static_cast<std::size_t>(total));
   parallel_for(total, [&](std::int64_t s) {
     const std::int64_t id = identity[s];
-    keyed[static_cast<std::size_t>(s)] = {static_cast<std::int64_t>(rank[id >> 8] / kLanes) << 8 | (id & 0xff),
+    keyed[static_cast<std::size_t>(s)] = {static_cast<std::int64_t>(rank[id >> 8] / kLanes<Real>) << 8 | (id & 0xff),
                                           static_cast<std::int32_t>(s)};
   });
   std::sort(keyed.begin(), keyed.end());
@@ -89,10 +89,10 @@ void Solver<Real>::build_clusters() {
     if (k == 0 || keyed[k].first != keyed[k - 1].first) ++clusters;
     cluster_of_slot_[static_cast<std::size_t>(keyed[k].second)] = static_cast<std::int32_t>(clusters - 1);
   }
-  cluster_slot_.assign(static_cast<std::size_t>(clusters * kLanes), -1);
+  cluster_slot_.assign(static_cast<std::size_t>(clusters * kLanes<Real>), -1);
   for (std::int64_t s = 0; s < total; ++s)
-    cluster_slot_[static_cast<std::size_t>(cluster_of_slot_[static_cast<std::size_t>(s)] * kLanes +
-                                           rank[identity[s] >> 8] % kLanes)] = static_cast<std::int32_t>(s);
+    cluster_slot_[static_cast<std::size_t>(cluster_of_slot_[static_cast<std::size_t>(s)] * kLanes<Real> +
+                                           rank[identity[s] >> 8] % kLanes<Real>)] = static_cast<std::int32_t>(s);
   // Each row's clusters, in the order of their keys (= their index), where its list entries were.
   const std::int64_t* off = raw(list_offset_);
   const std::int32_t* list = raw(list_);
@@ -114,12 +114,12 @@ void Solver<Real>::build_clusters() {
 template <class Real>
 template <class Packed, class Fill>
 void Solver<Real>::pack_by_lane(const char* name, std::vector<Packed>& packed, Fill fill) {
-  const std::int64_t clusters = static_cast<std::int64_t>(cluster_slot_.size()) / kLanes;
+  const std::int64_t clusters = static_cast<std::int64_t>(cluster_slot_.size()) / kLanes<Real>;
   packed.resize(static_cast<std::size_t>(clusters));
   const std::int32_t* cs = cluster_slot_.data();
   Packed* out = packed.data();
   launch<kFlush>(name, clusters, [=](std::int64_t c) {
-    for (int l = 0; l < kLanes; ++l) fill(out[c], l, cs[c * kLanes + l]);
+    for (int l = 0; l < kLanes<Real>; ++l) fill(out[c], l, cs[c * kLanes<Real> + l]);
   });
 }
 
@@ -145,12 +145,12 @@ void Solver<Real>::pack_cluster_points(const StagePoints<Real>& w) {
 }
 
 namespace cluster_lanes {
-template <class T> inline Mat3<Lanes<T>> load_mat(const T (*rows)[kLanes]) {
+template <class T> inline Mat3<Lanes<T>> load_mat(const T (*rows)[kLanes<T>]) {
   Mat3<Lanes<T>> a;
   for (int q = 0; q < 9; ++q) a.m[q / 3][q % 3] = Lanes<T>::load(rows[q]);
   return a;
 }
-template <class T> inline Mat3<Lanes<T>> load_sym(const T (*rows)[kLanes]) {
+template <class T> inline Mat3<Lanes<T>> load_sym(const T (*rows)[kLanes<T>]) {
   const Lanes<T> xx = Lanes<T>::load(rows[0]), yy = Lanes<T>::load(rows[1]), zz = Lanes<T>::load(rows[2]);
   const Lanes<T> xy = Lanes<T>::load(rows[3]), yz = Lanes<T>::load(rows[4]), zx = Lanes<T>::load(rows[5]);
   return Sym3<Lanes<T>>{xx, yy, zz, xy, yz, zx}.full();
@@ -173,7 +173,7 @@ struct LanePair {
 template <class Real>
 struct LaneRow {
   using L = Lanes<Real>;
-  using LD = Lanes<double>;
+  using LD = Lanes<double, kLanes<Real>>;
   using M = LaneMask<Real>;
   using LI = typename M::V;
   LD x, y, z;
@@ -250,7 +250,7 @@ void Solver<Real>::pass1_clusters(const Kernel& kernel, const StagePoints<Real>&
     grad_v[i] = cg.grad_v;
     fell[i] = cg.fell_back ? 1 : 0;
     std::int32_t c = 0;
-    for (int l = 0; l < kLanes; ++l) c += static_cast<std::int32_t>(count[l]);
+    for (int l = 0; l < kLanes<Real>; ++l) c += static_cast<std::int32_t>(count[l]);
     ncount[i] = c;
   });
 }

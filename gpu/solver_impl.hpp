@@ -62,11 +62,11 @@ namespace impactsph::gpu::IMPACTSPH_GPU_BACKEND {
 // cluster's data are contiguous, and each field of it is one SIMD load.
 template <class Real>
 struct alignas(64) ClusterPoints {
-  double x[kLanes], y[kLanes], z[kLanes];  // position, m
-  Real h[kLanes], vol[kLanes];             // smoothing length (m), volume m/rho (m^3)
-  Real vx[kLanes], vy[kLanes], vz[kLanes];  // velocity, m/s
-  Real rho[kLanes], damage[kLanes];         // density (kg/m^3), pair damage
-  std::int32_t slot[kLanes], body[kLanes], walls[kLanes], face[kLanes];  // sorted point (-1: none), body,
+  double x[kLanes<Real>], y[kLanes<Real>], z[kLanes<Real>];  // position, m
+  Real h[kLanes<Real>], vol[kLanes<Real>];             // smoothing length (m), volume m/rho (m^3)
+  Real vx[kLanes<Real>], vy[kLanes<Real>], vz[kLanes<Real>];  // velocity, m/s
+  Real rho[kLanes<Real>], damage[kLanes<Real>];         // density (kg/m^3), pair damage
+  std::int32_t slot[kLanes<Real>], body[kLanes<Real>], walls[kLanes<Real>], face[kLanes<Real>];  // sorted point (-1: none), body,
                                                                          // image walls, crack face
 };
 // What pass 2 reads of the kLanes points of a cluster beyond ClusterPoints, lane by lane (after pass 1 and the
@@ -74,13 +74,13 @@ struct alignas(64) ClusterPoints {
 // pair terms read them (artificial stress on; limited viscosity).
 template <class Real>
 struct alignas(64) ClusterRates {
-  Real A[6][kLanes];         // (S - P I) / rho^2 as Sym3 (xx, yy, zz, xy, yz, zx), m^5 kg^-1 s^-2
-  Real R[6][kLanes];         // artificial stress, as A
-  Real linv[9][kLanes];      // correction L^-1, row-major
-  Real grad_v[9][kLanes];    // dv_a/dx_b (1/s), row-major
-  Real grad_rho[3][kLanes];  // kg/m^4
-  Real c[kLanes], av[kLanes], m[kLanes];  // sound speed (m/s), viscosity factor, mass (kg)
-  std::int32_t mat[kLanes];  // material (-1: no point)
+  Real A[6][kLanes<Real>];         // (S - P I) / rho^2 as Sym3 (xx, yy, zz, xy, yz, zx), m^5 kg^-1 s^-2
+  Real R[6][kLanes<Real>];         // artificial stress, as A
+  Real linv[9][kLanes<Real>];      // correction L^-1, row-major
+  Real grad_v[9][kLanes<Real>];    // dv_a/dx_b (1/s), row-major
+  Real grad_rho[3][kLanes<Real>];  // kg/m^4
+  Real c[kLanes<Real>], av[kLanes<Real>], m[kLanes<Real>];  // sound speed (m/s), viscosity factor, mass (kg)
+  std::int32_t mat[kLanes<Real>];  // material (-1: no point)
 };
 // What the lane loops read of each real's row: its slot, its clusters cluster[first[i] .. end[i]) (where its
 // list entries were), the packed clusters, and each body's penalty-contact bits.
