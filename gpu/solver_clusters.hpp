@@ -261,19 +261,17 @@ template <class Real>
 void Solver<Real>::pack_cluster_rates(const StagePoints<Real>& w) {
   const bool art = params_.art.on(), limited = params_.visc.limited;
   pack_by_lane("pack_cluster_rates", packed_rates_, [=](ClusterRates<Real>& p, int l, std::int32_t s) {
-    const Sym3<Real> A = s < 0 ? Sym3<Real>::zero() : w.A[s];
-    const Sym3<Real> R = s < 0 || !art ? Sym3<Real>::zero() : w.R[s];
-    const Real sym[2][6] = {{A.xx, A.yy, A.zz, A.xy, A.yz, A.zx}, {R.xx, R.yy, R.zz, R.xy, R.yz, R.zx}};
-    for (int q = 0; q < 6; ++q) {
-      p.A[q][l] = sym[0][q];
-      p.R[q][l] = sym[1][q];
-    }
-    const Mat3<Real> linv = s < 0 ? Mat3<Real>::zero() : w.linv[s];
-    const Mat3<Real> gv = s < 0 || !limited ? Mat3<Real>::zero() : w.grad_v[s];
-    for (int q = 0; q < 9; ++q) {
-      p.linv[q][l] = linv.m[q / 3][q % 3];
-      p.grad_v[q][l] = gv.m[q / 3][q % 3];
-    }
+    auto put_sym = [l](Real (*rows)[kLanes<Real>], const Sym3<Real>& a) {
+      const Real v[6] = {a.xx, a.yy, a.zz, a.xy, a.yz, a.zx};
+      for (int q = 0; q < 6; ++q) rows[q][l] = v[q];
+    };
+    auto put_mat = [l](Real (*rows)[kLanes<Real>], const Mat3<Real>& a) {
+      for (int q = 0; q < 9; ++q) rows[q][l] = a.m[q / 3][q % 3];
+    };
+    put_sym(p.A, s < 0 ? Sym3<Real>::zero() : w.A[s]);
+    put_mat(p.linv, s < 0 ? Mat3<Real>::zero() : w.linv[s]);
+    if (art) put_sym(p.R, s < 0 ? Sym3<Real>::zero() : w.R[s]);  // not read (nor written) where off
+    if (limited) put_mat(p.grad_v, s < 0 ? Mat3<Real>::zero() : w.grad_v[s]);
     const Vec3<Real> gr = s < 0 ? Vec3<Real>{0, 0, 0} : w.grad_rho[s];
     p.grad_rho[0][l] = gr.x; p.grad_rho[1][l] = gr.y; p.grad_rho[2][l] = gr.z;
     p.c[l] = s < 0 ? Real(0) : w.c[s];

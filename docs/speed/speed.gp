@@ -3,7 +3,7 @@ set output 'speed.png'
 set logscale xy
 set xlabel 'neighbours within the kernel support'
 set ylabel 'particle-steps/s, one core'
-set title 'Whole steps of the 8000-particle block, one thread (commit fb1a0e2)'
+set title 'Whole steps of the 8000-particle block, one thread (commit 65a982c)'
 set grid
 set key top right
 plot 'speed.dat' index 0 with linespoints lw 2 title 'reference (double)', \
