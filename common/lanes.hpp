@@ -31,6 +31,7 @@ template <class T, int N = kLanes<T>>
 struct LaneMask {
   typedef LaneInt<T> V __attribute__((vector_size(N * sizeof(LaneInt<T>))));
   V v;
+  static LaneMask every(bool b) { return {V{} + (b ? -1 : 0)}; }  // every lane b
   friend LaneMask operator&(LaneMask a, LaneMask b) { return {a.v & b.v}; }
   friend LaneMask operator|(LaneMask a, LaneMask b) { return {a.v | b.v}; }
   friend LaneMask operator!(LaneMask a) { return {~a.v}; }

@@ -131,9 +131,9 @@ template <class Real> IMPACTSPH_HD Mat3<Real> crack_face_stress(const Mat3<Real>
 // h_ij is the pair smoothing length (m), m_j the mass of j (kg).
 template <class Real>
 IMPACTSPH_HD_INLINE void add_momentum_energy_pair(const PairSide<Real>& i, const PairSide<Real>& j,
-                                           const ViscosityParams<ScalarOf<Real>>& visc, Vec3<Real> gw, Vec3<Real> xij,
-                                           Vec3<Real> vij, Real hij, Real m_j, Real stress_factor, Vec3<Real>& acc,
-                                           Real& de) {
+                                                  const ViscosityParams<ScalarOf<Real>>& visc, Vec3<Real> gw,
+                                                  Vec3<Real> xij, Vec3<Real> vij, Real hij, Real m_j, Real stress_factor,
+                                                  Vec3<Real>& acc, Real& de) {
   const Vec3<Real> gt = (Real(0.5) * damaged_pair_factor(i.damage, j.damage)) * ((i.l_inverse + j.l_inverse) * gw);
   const Vec3<Real> v_visc = viscous_jump(visc, xij, vij, i.grad_v, j.grad_v, hij);
   const Real pi_ij = Real(0.5) * (i.av_factor + j.av_factor) *

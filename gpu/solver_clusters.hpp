@@ -229,7 +229,7 @@ void Solver<Real>::pass1_clusters(const Kernel& kernel, const StagePoints<Real>&
     const LaneRow<Real> lane_row(row.x, row.h, cr.penalty_bits[row.body], row.let_go, s);
     const L damage_i(row.damage), rho_i(row.rho);
     const Vec3<L> v_i = broadcast(row.v);
-    const M face_i{LI{} + (row.face ? -1 : 0)};
+    const M face_i = M::every(row.face);
     Mat3<L> L_sum = Mat3<L>::zero(), L_damaged = Mat3<L>::zero(), G = Mat3<L>::zero();
     Vec3<L> grad_rho{L(0), L(0), L(0)};
     LI count{};
@@ -281,7 +281,6 @@ void Solver<Real>::pack_cluster_rates(const StagePoints<Real>& w) {
   });
 }
 
-
 // Pass 2's SPH pair sums of every real over its clusters (add_rate_neighbour's terms, kLanes neighbours at a
 // time), kRateSums a row into sums; penalty contact and the rates follow in the row loop (solver_passes.hpp).
 template <class Real>
@@ -304,7 +303,7 @@ void Solver<Real>::pass2_clusters(const Kernel& kernel, const StagePoints<Real>&
     const L damage_i(row.side.damage), rho_i(row.side.rho);
     const Vec3<L> v_i = broadcast(row.v), grad_rho_i = broadcast(row.grad_rho);
     const PairSide<L> side_i{broadcast(row.side.A), broadcast(row.side.l_inverse), damage_i, L(row.side.av_factor),
-                             L(row.side.sound_speed), rho_i, M{LI{} + (row.side.crack_face ? -1 : 0)},
+                             L(row.side.sound_speed), rho_i, M::every(row.side.crack_face),
                              broadcast(row.side.R), broadcast(row.side.grad_v)};
     const LI mat_i = LI{} + static_cast<LaneInt<Real>>(row.mat);
     Vec3<L> acc{L(0), L(0), L(0)};

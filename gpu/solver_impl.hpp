@@ -515,6 +515,7 @@ class Solver final : public GpuStepper {
     cluster_pairs_ = on;
     sorted_ = false;  // the next step sorts, and builds the clusters
   }
+  bool takes_cluster_pairs() const { return cluster_pairs_ && cluster_pairs_possible_; }
   void set_cluster_ranks(const Scene& scene);
   void build_clusters();
   template <class Packed, class Fill> void pack_by_lane(const char* name, std::vector<Packed>& packed, Fill fill);

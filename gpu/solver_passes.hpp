@@ -103,7 +103,7 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
   std::int32_t* fell = raw(fallback_);
   std::int32_t* ncount = raw(neighbour_count_);
 #if !defined(__CUDACC__)
-  const bool clusters = cluster_pairs_ && cluster_pairs_possible_;
+  const bool clusters = takes_cluster_pairs();
   if (clusters) pass1_clusters(kernel, w);
 #else
   constexpr bool clusters = false;
@@ -149,15 +149,13 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
   Sym3<Real>* rS = raw(rate_S_);
   Real* reps = raw(strain_rate_);
   Real* rcp = raw(contact_power_);
-#if !defined(__CUDACC__)
   const Real* cluster_sums = nullptr;  // the SPH pairs' sums taken over cluster pairs, when they are
+#if !defined(__CUDACC__)
   if (clusters) {
     pair_sums_.resize(static_cast<std::size_t>(n * kRateSums));
     pass2_clusters(kernel, w, pair_sums_.data());
     cluster_sums = pair_sums_.data();
   }
-#else
-  const Real* cluster_sums = nullptr;
 #endif
   launch<kFlush>("pass2", n, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
     const std::int64_t s = slot[i];

@@ -179,7 +179,7 @@ void Solver<Real>::sort_particles() {
   wgv_.resize(params_.visc.limited ? t : 0);
   wlet_go_.resize(t); wimage_walls_.resize(t);
 #if !defined(__CUDACC__)
-  if (cluster_pairs_ && cluster_pairs_possible_) build_clusters();
+  if (takes_cluster_pairs()) build_clusters();
 #endif
   sorted_ = true;
   stats_.ghosts = static_cast<std::size_t>(ghosts_);
