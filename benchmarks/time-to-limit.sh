@@ -4,10 +4,13 @@
 # TOL m/s. With the same physics (the same bits) and the same overrides both searches make the same runs
 # with the same verdicts, and the ratio of their wall times is the speed-up of the step; with BEFORE_SETS
 # different from SETS (e.g. one resolution against the rim) it is the time to the answer of the whole change,
-# and the report names any speed whose verdict differs. Writes
-# OUT.md (OUT without .md) from the searches' ballistic.json and the wall time of each search.
+# and the report names any speed whose verdict differs. With BEFORE the same build and AFTER_ARGS another
+# solver, it times the two solvers on one scene. Writes OUT.md (OUT without .md) from the searches'
+# ballistic.json and the wall time of each search.
 #
 #   BEFORE=/path/to/impactsph-of-901a706 BEFORE_COMMIT=901a706 bash benchmarks/time-to-limit.sh
+#   BEFORE=build/impactsph BEFORE_COMMIT=$(git rev-parse --short HEAD) AFTER_ARGS='--backend gpu --precision float' \
+#     RUNS=runs/time-to-limit-solvers OUT=docs/speed/time-to-limit-2mm-port-vs-reference bash benchmarks/time-to-limit.sh
 #
 # BEFORE=none runs the AFTER search alone, where the earlier build's search would take longer than there is
 # time for; NO_BEFORE (required then) says why, and the report gives the one search's time, no ratio.
@@ -137,11 +140,11 @@ cmd = (f"{before_env}{after_env}SPACING={spacing} FROM={v_from} "
 def verdict_difference():
     before, after = dict(searches["before"]), dict(searches["after"])
     if set(before) != set(after):
-        return "the two scenes' verdicts differ near the limit, so the searches ran different speeds"
+        return "the two searches' verdicts differ near the limit, so they ran different speeds"
     differ = [v for v in sorted(before) if before[v] != after[v]]
     return ("they ran the same speeds, and the verdicts differ at " +
-            ", ".join(f"{v:g} m/s (earlier scene: {'perforated' if before[v] else 'held'}, "
-                      f"this one: {'perforated' if after[v] else 'held'})" for v in differ))
+            ", ".join(f"{v:g} m/s (before: {'perforated' if before[v] else 'held'}, "
+                      f"after: {'perforated' if after[v] else 'held'})" for v in differ))
 
 
 def search_command(extra_sets, extra_args):
@@ -159,7 +162,7 @@ with open(out + ".md", "w") as f:
         f.write(f"`{search_command(sets, after_args)}`, run by " + ("this build alone" if no_before else "each build in turn on the same machine") +
                 "; the wall time is the whole search's, from its start to its result.\n\n")
     else:
-        f.write(f"The earlier build: `{search_command(before_sets, before_args)}`; this build: "
+        f.write(f"Before: `{search_command(before_sets, before_args)}`; after: "
                 f"`{search_command(sets, after_args)}`; each in turn on the same machine; the wall time is the whole "
                 "search's, from its start to its result.\n\n")
     for label, _ in builds:
