@@ -1,9 +1,9 @@
-// Lanes<T>: kLanes<T> values of T held in one 512-bit SIMD register (a GCC vector type: 8 doubles or 16 floats),
-// for the pair loops of the gpu port's host build over cluster pairs (gpu/solver_clusters.hpp). The common/
+// Lanes<T>: kLanes<T> values of T held in one SIMD register of the building machine (a GCC vector type: 8
+// doubles or 16 floats with AVX-512, 4 or 8 with AVX, 2 or 4 with SSE2), for the pair loops of the gpu port's host build over cluster pairs (gpu/solver_clusters.hpp). The common/
 // pair functions are templates on Real; with Real = Lanes<T> each lane is one neighbour, and the overloads
 // below (choose, any_true, min_of, max_of, sqrt, norm, exp) stand where the scalar functions compare, take a
-// root or an exponential. A comparison gives a LaneMask. Lanes<double, 16> holds the double positions of 16
-// float lanes (two registers). Host only.
+// root or an exponential. A comparison gives a LaneMask. Lanes<double, kLanes<float>> holds the double positions
+// of the float lanes (two registers). Host only.
 #pragma once
 #if defined(__CUDACC__)
 #error "common/lanes.hpp is for host builds only"
@@ -20,8 +20,19 @@
 
 namespace impactsph {
 
-// Values of T in one 512-bit register.
-template <class T> inline constexpr int kLanes = static_cast<int>(64 / sizeof(T));
+// Bytes in one SIMD register of the building machine. A GCC vector wider than the machine's registers is
+// split by the compiler, and its comparisons and masks partly lane by lane through memory: with 16 float
+// lanes on an AVX2 machine, the cluster pairs took 1.9x the time of the rows (gpu/README.md).
+#if defined(__AVX512F__)
+inline constexpr int kSimdBytes = 64;
+#elif defined(__AVX__)
+inline constexpr int kSimdBytes = 32;
+#else
+inline constexpr int kSimdBytes = 16;
+#endif
+
+// Values of T in one SIMD register.
+template <class T> inline constexpr int kLanes = static_cast<int>(kSimdBytes / sizeof(T));
 
 // The integer lane type of the same width as T, which GCC's vector comparisons return.
 template <class T> using LaneInt = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
@@ -105,8 +116,28 @@ template <class T, int N> inline Lanes<T, N> min_of(Lanes<T, N> a, Lanes<T, N> b
 template <class T, int N> inline Lanes<T, N> max_of(Lanes<T, N> a, Lanes<T, N> b) { return choose(a > b, a, b); }
 
 // Square root of each lane, correctly rounded as std::sqrt is (one instruction where the lanes fill a
-// 512-bit register and the machine has AVX-512; the masked form, as GCC 12 warns on _mm512_sqrt_pd).
+// 512-bit register and the machine has AVX-512, the masked form, as GCC 12 warns on _mm512_sqrt_pd; one per
+// 256-bit half with AVX).
 template <class T, int N> inline Lanes<T, N> sqrt(Lanes<T, N> a) {
+#if defined(__AVX__)
+  if constexpr (sizeof(a.v) % 32 == 0 && kSimdBytes == 32 && (std::is_same_v<T, double> || std::is_same_v<T, float>)) {
+    Lanes<T, N> r;
+    for (std::size_t k = 0; k < sizeof(a.v) / 32; ++k) {
+      if constexpr (std::is_same_v<T, double>) {
+        __m256d x;
+        std::memcpy(&x, reinterpret_cast<const char*>(&a.v) + 32 * k, 32);
+        x = _mm256_sqrt_pd(x);
+        std::memcpy(reinterpret_cast<char*>(&r.v) + 32 * k, &x, 32);
+      } else {
+        __m256 x;
+        std::memcpy(&x, reinterpret_cast<const char*>(&a.v) + 32 * k, 32);
+        x = _mm256_sqrt_ps(x);
+        std::memcpy(reinterpret_cast<char*>(&r.v) + 32 * k, &x, 32);
+      }
+    }
+    return r;
+  }
+#endif
 #if defined(__AVX512F__)
   if constexpr (sizeof(a.v) == 64 && std::is_same_v<T, double>) {
     const __m512d x = reinterpret_cast<__m512d>(a.v);
