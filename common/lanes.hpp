@@ -1,9 +1,10 @@
 // Lanes<T>: kLanes<T> values of T held in one SIMD register of the building machine (a GCC vector type: 8
-// doubles or 16 floats with AVX-512, 4 or 8 with AVX, 2 or 4 with SSE2), for the pair loops of the gpu port's host build over cluster pairs (gpu/solver_clusters.hpp). The common/
-// pair functions are templates on Real; with Real = Lanes<T> each lane is one neighbour, and the overloads
-// below (choose, any_true, min_of, max_of, sqrt, norm, exp) stand where the scalar functions compare, take a
-// root or an exponential. A comparison gives a LaneMask. Lanes<double, kLanes<float>> holds the double positions
-// of the float lanes (two registers). Host only.
+// doubles or 16 floats with AVX-512, 4 or 8 with AVX, 2 or 4 with SSE2), for the pair loops of the gpu port's
+// host build over cluster pairs (gpu/solver_clusters.hpp). The common/ pair functions are templates on Real;
+// with Real = Lanes<T> each lane is one neighbour, and the overloads below (choose, any_true, min_of, max_of,
+// sqrt, norm, exp) stand where the scalar functions compare, take a root or an exponential. A comparison gives
+// a LaneMask. Lanes<double, kLanes<float>> holds the double positions of the float lanes (two registers).
+// Host only.
 #pragma once
 #if defined(__CUDACC__)
 #error "common/lanes.hpp is for host builds only"
