@@ -24,7 +24,9 @@
 # empty: none, for a before search at one resolution against an after search with the rim), AFTER_ARGS /
 # BEFORE_ARGS (further arguments of each build's search, e.g. its solver: AFTER_ARGS='--backend gpu --precision
 # float'; default none), RUNS (runs/time-to-limit), OUT (docs/speed/time-to-limit-<SPACING>mm), NOTE (what else
-# ran on the machine), REPORT_ONLY=1 (no search: the report from RUNS and the wall times recorded there).
+# ran on the machine), BRACKET_NOTE (why FROM and TO are where they are, where they are not the default 120 / 180,
+# e.g. set from a coarser spacing's limit), REPORT_ONLY=1 (no search: the report from RUNS and the wall times
+# recorded there).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BEFORE=${BEFORE:?set BEFORE to an impactsph binary built at an earlier commit with the same physics}
@@ -88,7 +90,8 @@ search after "$AFTER" "$SETS" "$AFTER_ARGS"
 
 AFTER_SET=""
 if [ "$AFTER" != build/impactsph ]; then AFTER_SET="AFTER=<impactsph built at $AFTER_COMMIT> AFTER_COMMIT=$AFTER_COMMIT "; fi
-export AFTER_SET NO_BEFORE AFTER_ARGS BEFORE_ARGS
+BRACKET_NOTE=${BRACKET_NOTE:-}
+export AFTER_SET NO_BEFORE AFTER_ARGS BEFORE_ARGS BRACKET_NOTE
 python3 - "$RUNS" "$SPACING" "$OUT" "$BEFORE_COMMIT" "$AFTER_COMMIT" "$NOTE" "$FROM" "$TO" "$TOL" "$JOBS" "$SETS" "$BEFORE_SETS" <<'EOF'
 import datetime, json, os, platform, sys
 runs, spacing, out, before_commit, after_commit, note, v_from, v_to, tol, jobs, sets, before_sets = sys.argv[1:]
@@ -98,6 +101,7 @@ rows = []
 searches = {}
 run_rows = {}
 no_before = os.environ.get("NO_BEFORE", "")
+bracket_note = os.environ.get("BRACKET_NOTE", "")
 after_args = os.environ.get("AFTER_ARGS", "")
 before_args = after_args if before_commit == "none" else os.environ.get("BEFORE_ARGS", "")
 parts = {}
@@ -134,6 +138,7 @@ cmd = (f"{before_env}{after_env}SPACING={spacing} FROM={v_from} "
        (f" BEFORE_SETS='{before_sets}'" if before_sets != sets else "") +
        (f" AFTER_ARGS='{after_args}'" if after_args else "") +
        (f" BEFORE_ARGS='{before_args}'" if before_args and before_commit != "none" else "") +
+       (f" BRACKET_NOTE=\"{bracket_note}\"" if bracket_note else "") +
        f" NOTE=\"{note}\" bash benchmarks/time-to-limit.sh")
 
 
@@ -165,6 +170,8 @@ with open(out + ".md", "w") as f:
         f.write(f"Before: `{search_command(before_sets, before_args)}`; after: "
                 f"`{search_command(sets, after_args)}`; each in turn on the same machine; the wall time is the whole "
                 "search's, from its start to its result.\n\n")
+    if bracket_note:
+        f.write(f"The search starts from {v_from} and {v_to} m/s: {bracket_note}\n\n")
     for label, _ in builds:
         count, machines = parts.get(label, (1, []))
         if count > 1:
