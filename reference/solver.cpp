@@ -52,22 +52,23 @@ StagePoints<double> ReferenceSolver::points() {
           params_.body_count};
 }
 
-// r and the kernel gradient factor of the candidate pairs [begin, end) of a row at x_i, h_i (pair_geometry,
-// Kernel::grad_factor: the same operations in the same order), into candidate_r_ and candidate_factor_: a loop
-// of its own, without branches, that the compiler takes in SIMD lanes.
+// r and the kernel gradient factor of a row's candidates c.j[0, count) at x_i, h_i (pair_geometry,
+// Kernel::grad_factor: the same operations in the same order), into c.r and c.factor: a loop of its own,
+// without branches, that the compiler takes in SIMD lanes.
 static_assert(sizeof(Vec3d) == 3 * sizeof(double), "candidate_kernel reads the positions as x, y, z in turn");
 constexpr double kCandidateMargin = 1 + 1e-9;  // on r^2 <= support^2, far above a rounding of the square root
 
 template <class Kernel>
-void ReferenceSolver::candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std::int64_t begin, std::int64_t end) {
+void ReferenceSolver::candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std::int64_t count,
+                                       RowCandidates& c) const {
   const double xi = x_i.x, yi = x_i.y, zi = x_i.z;
   const double* __restrict x = &x_[0].x;
   const double* __restrict h = hh_.data();
-  const std::int32_t* __restrict cand = candidate_j_.data();
-  double* __restrict r_out = candidate_r_.data();
-  double* __restrict factor_out = candidate_factor_.data();
+  const std::int32_t* __restrict cand = c.j.data();
+  double* __restrict r_out = c.r.data();
+  double* __restrict factor_out = c.factor.data();
 #pragma omp simd
-  for (std::int64_t k = begin; k < end; ++k) {
+  for (std::int64_t k = 0; k < count; ++k) {
     const std::int64_t j = cand[k];
     const double r = norm(Vec3d{xi - x[3 * j], yi - x[3 * j + 1], zi - x[3 * j + 2]});  // pair_geometry's x_ij
     const double hij = 0.5 * (h_i + h[j]);
@@ -130,9 +131,6 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   row_neighbours_.resize(n);
   fell_back_.resize(n);
   pair_j_.resize(neighbours_.indices.size());
-  candidate_j_.resize(neighbours_.indices.size());
-  candidate_r_.resize(neighbours_.indices.size());
-  candidate_factor_.resize(neighbours_.indices.size());
   pair_grad_factor_.resize(neighbours_.indices.size());
   pair_r_.resize(neighbours_.indices.size());
   sph_end_.resize(n);
@@ -142,24 +140,27 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     const GradientRow<double> row = gradient_row(w, mats, i);
     std::int32_t neighbours = 0;  // within the kernel support, for the statistics
     std::int64_t sph = off[i], contact = off[i + 1];
-    std::int64_t candidates = off[i];
+    static thread_local RowCandidates c;
+    const std::size_t row_length = static_cast<std::size_t>(off[i + 1] - off[i]);
+    if (c.j.size() < row_length) { c.j.resize(row_length); c.r.resize(row_length); c.factor.resize(row_length); }
+    std::int64_t candidates = 0;
     // The list's skin first, with no branch: the candidates are the entries that may lie within the support
     // (r^2 against the support's square, with a margin above the rounding, so that no pair that pair_geometry
     // takes in is dropped) and every penalty contact pair.
     for (std::int64_t k = off[i]; k < off[i + 1]; ++k) {
       const std::int32_t j = nb[k];
       const double support = kernel_support(0.5 * (row.h + w.h[j]));
-      candidate_j_[candidates] = j;
+      c.j[static_cast<std::size_t>(candidates)] = j;
       candidates += (norm2(row.x - w.x[j]) <= support * support * kCandidateMargin) | w.pair(row.body, bb_[j]).penalty;
     }
     if (kernel.kind() == KernelKind::WendlandC2)
-      candidate_kernel(FixedKernel<KernelKind::WendlandC2>{}, row.x, row.h, off[i], candidates);
+      candidate_kernel(FixedKernel<KernelKind::WendlandC2>{}, row.x, row.h, candidates, c);
     else
-      candidate_kernel(FixedKernel<KernelKind::CubicSpline>{}, row.x, row.h, off[i], candidates);
-    const double* cand_r = candidate_r_.data();
-    const double* cand_factor = candidate_factor_.data();
-    for (std::int64_t k = off[i]; k < candidates; ++k) {
-      const std::int32_t j = candidate_j_[k];
+      candidate_kernel(FixedKernel<KernelKind::CubicSpline>{}, row.x, row.h, candidates, c);
+    const double* cand_r = c.r.data();
+    const double* cand_factor = c.factor.data();
+    for (std::int64_t k = 0; k < candidates; ++k) {
+      const std::int32_t j = c.j[static_cast<std::size_t>(k)];
       const bool penalty = w.pair(row.body, bb_[j]).penalty;
       if (penalty) pair_j_[--contact] = j;
       const PairGeometry<double> g = pair_geometry_at(w, row.x, row.h, j, cand_r[k]);

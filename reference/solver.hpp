@@ -70,8 +70,14 @@ class ReferenceSolver final : public Stepper {
   // before the step ends.
   void update_neighbours(const ParticleSet& p, double dt);
   void evaluate(const State& y, Rates& f, double dt);
+  // A row's candidates (pass 1): their indices, r and kernel gradient factor, in the scratch of the thread
+  // that takes the row, so that they stay in its cache.
+  struct RowCandidates {
+    std::vector<std::int32_t> j;
+    std::vector<double> r, factor;  // m, 1/m^5
+  };
   template <class Kernel>
-  void candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std::int64_t begin, std::int64_t end);
+  void candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std::int64_t count, RowCandidates& c) const;
   void advance(const State& y0, const Rates& f, double dt, State& out, History* history) const;
   void check_state(const State& y, double dt) const;
   // The work arrays as the stages (common/stages.hpp) read them.
@@ -123,9 +129,8 @@ class ReferenceSolver final : public Stepper {
   // that share sums, within the support) from the front of its slots, with their kernel gradient factor and
   // r, and its penalty contact pairs from the back; pass 2 reads them back rather than test and take the
   // kernel of every list entry again.
-  std::vector<std::int32_t> pair_j_, candidate_j_;
+  std::vector<std::int32_t> pair_j_;
   std::vector<double> pair_grad_factor_, pair_r_;  // 1/m^5, m
-  std::vector<double> candidate_r_, candidate_factor_;
   std::vector<std::int64_t> sph_end_, contact_begin_;  // per real: its SPH pairs end, its contact pairs begin
   std::vector<Sym3d> stress_;       // deviatoric stress of reals and ghosts
   // Stage states and rates, kept between steps so that a step allocates nothing.
