@@ -58,14 +58,18 @@ for path in sorted(glob.glob(os.path.join(tmp, '*.json'))):
 with open(os.path.join(out, 'block-runs.json'), 'w') as f:
     json.dump({'commit': commit, 'context': ctx, 'runs': runs}, f, indent=1)
 
-cpu = 'unknown'
+cpu, simd = 'unknown', ''
 try:
     for line in open('/proc/cpuinfo'):
-        if line.startswith('model name'):
+        if line.startswith('model name') and cpu == 'unknown':
             cpu = line.split(':', 1)[1].strip()
-            break
+        if line.startswith('flags') and not simd:
+            flags = line.split(':', 1)[1].split()
+            simd = 'AVX-512' if 'avx512f' in flags else 'AVX2' if 'avx2' in flags else 'no AVX2'
 except OSError:
     pass
+if simd:
+    cpu += ' (%s)' % simd
 names = {'before': 'reference, earlier build', 'reference': 'reference', 'float': 'gpu port host build (float)',
          'double': 'gpu port host build (double)'}
 labels = [l for l in ['before', 'reference', 'float', 'double'] if any(x['label'] == l for x in runs)]
