@@ -43,9 +43,10 @@ done
 commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
 dirty=$(git -C "$root" status --porcelain --untracked-files=no 2>/dev/null | head -1)
 [ -n "$dirty" ] && commit="$commit with uncommitted changes"
-python3 - "$tmp" "$out" "$commit" "${NOTE:-}" "${BEFORE_NOTE:-$before}" "$rounds" "$threads" "$min_time" <<'PY'
+python3 - "$tmp" "$out" "$commit" "${NOTE:-}" "${BEFORE_NOTE:-$before}" "$rounds" "$threads" "$min_time" \
+  "$(python3 "$root/benchmarks/machine.py")" <<'PY'
 import glob, json, os, statistics, sys
-tmp, out, commit, note, before_note, rounds, threads, min_time = sys.argv[1:9]
+tmp, out, commit, note, before_note, rounds, threads, min_time, cpu = sys.argv[1:10]
 runs = []
 for path in sorted(glob.glob(os.path.join(tmp, '*.json'))):
     label, t, r = os.path.basename(path)[:-5].split('.')
@@ -58,18 +59,6 @@ for path in sorted(glob.glob(os.path.join(tmp, '*.json'))):
 with open(os.path.join(out, 'block-runs.json'), 'w') as f:
     json.dump({'commit': commit, 'context': ctx, 'runs': runs}, f, indent=1)
 
-cpu, simd = 'unknown', ''
-try:
-    for line in open('/proc/cpuinfo'):
-        if line.startswith('model name') and cpu == 'unknown':
-            cpu = line.split(':', 1)[1].strip()
-        if line.startswith('flags') and not simd:
-            flags = line.split(':', 1)[1].split()
-            simd = 'AVX-512' if 'avx512f' in flags else 'AVX2' if 'avx2' in flags else 'no AVX2'
-except OSError:
-    pass
-if simd:
-    cpu += ' (%s)' % simd
 names = {'before': 'reference, earlier build', 'reference': 'reference', 'float': 'gpu port host build (float)',
          'double': 'gpu port host build (double)'}
 labels = [l for l in ['before', 'reference', 'float', 'double'] if any(x['label'] == l for x in runs)]

@@ -32,9 +32,9 @@ commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
 # The commit the earlier binary was built from, when it lies in a checkout (a worktree of that commit).
 before_commit=""
 if [ -n "$before" ]; then before_commit=$(git -C "$(dirname "$before")" rev-parse --short HEAD 2>/dev/null || echo "a build"); fi
-python3 - "$out" "$commit" "$before_commit" "${NOTE:-}" <<'PY'
+python3 - "$out" "$commit" "$before_commit" "${NOTE:-}" "$(python3 "$root/benchmarks/machine.py")" <<'PY'
 import json, os, subprocess, sys
-out, commit, before, note = sys.argv[1:5]
+out, commit, before, note, cpu = sys.argv[1:6]
 
 def load(path):
     rows = {}
@@ -70,14 +70,6 @@ with open(os.path.join(out, 'speed.dat'), 'w') as f:
             f.write('%.3f %.6g\n' % (n, v))
         f.write('\n\n')
 
-cpu = 'unknown'
-try:
-    for line in open('/proc/cpuinfo'):
-        if line.startswith('model name'):
-            cpu = line.split(':', 1)[1].strip()
-            break
-except OSError:
-    pass
 L = ['# Speed per core against the neighbour count', '',
      'Written by `bash benchmarks/speed-vs-neighbours.sh` (commit %s, %s); do not edit by hand.' % (commit, ctx.get('date', '')),
      'The 8000-particle steel block of benchmarks/block_scene.hpp, whole steps (time step, neighbour list, two',
