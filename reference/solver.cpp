@@ -132,7 +132,6 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   fell_back_.resize(n);
   pair_j_.resize(neighbours_.indices.size());
   pair_grad_factor_.resize(neighbours_.indices.size());
-  pair_r_.resize(neighbours_.indices.size());
   sph_end_.resize(n);
   contact_begin_.resize(n);
   parallel_for(ni, [&](std::int64_t i) IMPACTSPH_FLATTEN {
@@ -168,7 +167,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       ++neighbours;
       if (penalty || !shares_sums(w, row.body, row.let_go, j)) continue;
       const double factor = cand_factor[k];
-      pair_j_[sph] = j; pair_grad_factor_[sph] = factor; pair_r_[sph] = g.r; ++sph;
+      pair_j_[sph] = j; pair_grad_factor_[sph] = factor; ++sph;
       add_gradient_sph_pair(w, mats, row, j, g.xij, factor * g.xij, sums);
     }
     sph_end_[i] = sph;
@@ -195,7 +194,7 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
     double de = 0, diffusion = 0, contact_power = 0;
     for (std::int64_t k = off[i]; k < sph_end_[i]; ++k) {
       const std::int32_t j = pair_j_[k];
-      const PairGeometry<double> g = pair_geometry_at(w, row.x, row.h, j, pair_r_[k]);
+      const PairGeometry<double> g = pair_geometry(w, row.x, row.h, j);
       add_rate_sph_pair(kind, params_, w, mats, row, j, g, pair_grad_factor_[k] * g.xij, acc, de, diffusion);
     }
     for (std::int64_t k = off[i + 1]; k-- > contact_begin_[i];)

@@ -126,11 +126,11 @@ class ReferenceSolver final : public Stepper {
   std::vector<double> pair_damage_; // damage each particle brings into the pair factor (reals and ghosts)
   std::vector<std::int32_t> row_neighbours_, fell_back_;  // pass 1 per real: neighbours, 1 if it fell back
   // The pairs of this evaluation, in the slots of the list's rows: pass 1 writes each row's SPH pairs (those
-  // that share sums, within the support) from the front of its slots, with their kernel gradient factor and
-  // r, and its penalty contact pairs from the back; pass 2 reads them back rather than test and take the
-  // kernel of every list entry again.
+  // that share sums, within the support) from the front of its slots, with their kernel gradient factor,
+  // and its penalty contact pairs from the back; pass 2 reads them back rather than test and take the
+  // kernel of every list entry again (it takes r = |x_ij| again, as pass 1 did: the same bits).
   std::vector<std::int32_t> pair_j_;
-  std::vector<double> pair_grad_factor_, pair_r_;  // 1/m^5, m
+  std::vector<double> pair_grad_factor_;  // 1/m^5
   std::vector<std::int64_t> sph_end_, contact_begin_;  // per real: its SPH pairs end, its contact pairs begin
   std::vector<Sym3d> stress_;       // deviatoric stress of reals and ghosts
   // Stage states and rates, kept between steps so that a step allocates nothing.
