@@ -66,7 +66,8 @@ void BM_GpuHostStep(benchmark::State& state) {
 
 // The reference's whole step on the same block (as BM_Step of bench_reference), for the ratio in one run.
 // Its first step (the work arrays' first allocation, the first list) is taken before the clock starts, as
-// BM_GpuHostStep's is: on the 103823 block it cost about a step of its own, which a run pays once.
+// BM_GpuHostStep's is: a run pays it once, and timed with the others on the 103823 block it put 48 % of a
+// profile in the kernel's page clearing and cut the reported rate by about a third (gpu/README.md).
 void BM_ReferenceStep(benchmark::State& state) {
   Scene scene = block(side(state));
   reference::ReferenceSolver solver(scene);
