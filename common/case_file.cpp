@@ -40,7 +40,7 @@ void read_numerics(const View& root, NumericsSpec& num) {
            "viscosity_limiter", "viscosity_limiter_close_approach",
            "bulk_viscosity_linear", "bulk_viscosity_quadratic", "artificial_stress", "artificial_stress_exponent", "artificial_stress_of",
            "delta",
-           "cfl", "correction_max_condition"});
+           "cfl", "integrator", "correction_max_condition"});
   num.spacing = n.quantity("spacing", Dimension::Length);
   num.spacing_line = line_of(n.find("spacing"));
   n.positive("spacing", num.spacing, Dimension::Length);
@@ -79,6 +79,8 @@ void read_numerics(const View& root, NumericsSpec& num) {
   n.range("delta", num.delta, 0, 1, Dimension::Dimensionless);
   num.cfl = n.number_or("cfl", 0.2);
   n.range("cfl", num.cfl, 0, 1, Dimension::Dimensionless, true);
+  num.integrator = n.choice("integrator", {"leapfrog", "midpoint"}, "midpoint") == "leapfrog" ? Integrator::Leapfrog
+                                                                                            : Integrator::Midpoint;
   num.correction.max_condition = n.number_or("correction_max_condition", 1e3);
   if (!(num.correction.max_condition > 3))
     n.fail("correction_max_condition", "must be greater than 3, the condition number of the identity (got " +
@@ -158,6 +160,12 @@ CaseSpec read_case(const toml::table& tree, const Reporter& r) {
   read_boundaries(root, spec);
   read_contacts(root, spec);
   read_numerics(root, spec.numerics);
+  // A coarse region with a largest spacing ([bodies.coarse] max_spacing) is not built above it.
+  for (BodySpec& b : spec.bodies)
+    if (b.coarse_ratio > 1 && b.coarse_max_spacing > 0 && spec.numerics.spacing > b.coarse_max_spacing * (1 + 1e-9)) {
+      b.coarse_ratio = 1;
+      b.coarse_off_above = b.coarse_max_spacing;
+    }
   read_time(root, spec.time);
   read_observables(r, root, spec);
   if (const toml::node* n = root.find("output")) {

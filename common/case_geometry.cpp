@@ -123,7 +123,9 @@ void read_coarse(const View& b, BodySpec& body) {
   const View c = b.sub("coarse", "the coarse region of a body",
                        "{ ratio = 2, region = \"outside-cylinder\", axis = \"z\", axis_point = [\"0 mm\", \"0 mm\", "
                        "\"0 mm\"], radius = \"30 mm\" }");
-  read_region(c, body.coarse_region, {"ratio"});
+  read_region(c, body.coarse_region, {"ratio", "max_spacing"});
+  body.coarse_max_spacing = c.quantity_or("max_spacing", Dimension::Length, 0.0);
+  if (c.has("max_spacing")) c.positive("max_spacing", body.coarse_max_spacing, Dimension::Length);
   if (!c.has("ratio")) c.missing("ratio", "expected the region's spacing over numerics.spacing, 2");
   const double ratio = c.number("ratio");
   // Only the verified ratio (verification/analytic_resolution_interface.cpp): a pulse through a 2:1 interface

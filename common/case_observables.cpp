@@ -276,6 +276,26 @@ void track_settling(const ObservablesSpec& spec, double time, double v, RunClock
     c.settled_time = c.settle_window_start;
 }
 
+void track_held(const ObservablesSpec& spec, double time, const CaseObservables& o, RunClock& c) {
+  const bool resting_or_back = o.projectile && o.target && !o.perforated && o.residual_velocity <= spec.settle_tolerance;
+  if (!resting_or_back || (c.held_window_start >= 0 && o.damage_fraction != c.held_failed_fraction)) {
+    c.held_window_start = -1;
+    c.held_time = -1;
+  }
+  if (!resting_or_back) return;
+  if (c.held_window_start < 0) {
+    c.held_window_start = time;
+    c.held_failed_fraction = o.damage_fraction;
+    return;
+  }
+  if (c.held_time < 0 && time - c.held_window_start >= spec.settle_window) c.held_time = c.held_window_start;
+}
+
+double verdict_time(const RunClock& c) {
+  if (c.settled_time >= 0 && c.held_time >= 0) return std::min(c.settled_time, c.held_time);
+  return c.settled_time >= 0 ? c.settled_time : c.held_time;
+}
+
 bool impact_is_over(const ObservablesSpec& spec, const CaseObservables& o) {
   return !o.target || o.perforated || o.residual_velocity <= spec.settle_tolerance;
 }

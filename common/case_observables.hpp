@@ -26,7 +26,7 @@ struct CaseObservables {
   double plug_velocity = 0;         // m/s, its mass-weighted velocity along the impact direction
   double damage_fraction = 0;       // mass fraction of the target with D >= kFailedDamage (fully damaged)
   bool perforated = false;
-  double settled_time = -1;         // s, since when the residual velocity has been steady; -1: not yet
+  double settled_time = -1;         // s, since when the verdict is known (verdict_time); -1: not yet
 };
 
 CaseObservables measure_observables(const Scene& scene, const ParticleSet& p);
@@ -56,6 +56,17 @@ std::string format_observable(const ObservableRow& row);
 // then stay within the tolerance for the settle window, and a projectile still moving must not be drifting
 // fast enough to stop within ten windows (near the ballistic limit that is a stop in progress).
 void track_settling(const ObservablesSpec& spec, double time, double residual_velocity, RunClock& clock);
+
+// Tracks whether the target holds the projectile for good (state in RunClock): the projectile has stopped or
+// moves back (residual velocity at most the settle tolerance), it has not perforated, and no target
+// particle has failed, all through a settle window. Then held_time is the start of that window: nothing is
+// left that could carry the projectile through, and a run with stop_when_settled ends there with the
+// verdict "held" (the residual velocity it reports is the projectile's then, stopped or moving back).
+void track_held(const ObservablesSpec& spec, double time, const CaseObservables& o, RunClock& clock);
+
+// Since when the run's verdict is known (s): the residual velocity settled, or the target held the
+// projectile; -1: not yet.
+double verdict_time(const RunClock& clock);
 
 // Whether a run whose residual velocity has settled has nothing more to show (stop_when_settled): the
 // projectile perforated, or stopped or turned back (residual velocity <= the settle tolerance), or there

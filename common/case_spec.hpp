@@ -71,6 +71,10 @@ struct BodySpec {
   // any whole number. The region takes the kinds of [[boundaries.fixed]] (its body unused).
   int coarse_ratio = 1;
   FixedRegionSpec coarse_region;
+  // The largest numerics.spacing at which the coarse region is built (m; 0: at every spacing). Above it the
+  // body is built at one resolution (coarse_ratio 1) and coarse_off_above keeps the bound for `check`.
+  double coarse_max_spacing = 0;
+  double coarse_off_above = 0;
   int line = 0;            // line of its [[bodies]] header in the case file, for messages (0: unknown)
 };
 
@@ -99,6 +103,10 @@ struct ContactSpec {
   int line = 0;                     // line of its [[contacts]] header, for messages (0: unknown)
 };
 
+// How a step advances the state (common/stages.hpp, "Advance"): kick-drift-kick leapfrog, one evaluation of the
+// rates per step; or the explicit midpoint rule, two.
+enum class Integrator { Leapfrog, Midpoint };
+
 struct NumericsSpec {
   double spacing = 0;          // particle spacing dx, m
   int spacing_line = 0;        // line of numerics.spacing in the case file (0: unknown or overridden)
@@ -112,6 +120,7 @@ struct NumericsSpec {
   ArtificialStressOf artificial_stress_of = ArtificialStressOf::Deviatoric;  // which stress R is built from
   double delta = 0.1;          // delta-SPH coefficient (F Table 3)
   double cfl = 0.2;            // C_CFL of F eq 5.1
+  Integrator integrator = Integrator::Midpoint;
   CorrectionParams<double> correction{};
 };
 

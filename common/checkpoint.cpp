@@ -99,8 +99,8 @@ void write_checkpoint(const std::filesystem::path& file, const ParticleSet& p, c
       throw std::invalid_argument("write_checkpoint: particle arrays differ in length (" + std::to_string(a.size()) +
                                   " vs " + std::to_string(n) + ")");
   });
-  const std::uint64_t total = kHeaderSize + n * bytes_per_particle() + sizeof(RunClock) + sizeof(std::uint64_t) +
-                              fingerprint.size() + sizeof(std::uint64_t);
+  const std::uint64_t total = kHeaderSize + n * bytes_per_particle() + sizeof(std::uint64_t) + sizeof(RunClock) +
+                              sizeof(std::uint64_t) + fingerprint.size() + sizeof(std::uint64_t);
 
   Writer w(total);
   w.raw(kMagic, kMagicSize);
@@ -113,6 +113,7 @@ void write_checkpoint(const std::filesystem::path& file, const ParticleSet& p, c
   w.value(total);
   w.value(n);
   for_each_array(p, [&](const auto& a) { w.raw(a.data(), a.size() * sizeof(a[0])); });
+  w.value(static_cast<std::uint64_t>(p.rates_current ? 1 : 0));
   w.value(clock);
   w.value(static_cast<std::uint64_t>(fingerprint.size()));
   w.raw(fingerprint.data(), fingerprint.size());
@@ -176,6 +177,9 @@ CheckpointData read_checkpoint(const std::filesystem::path& file) {
   CheckpointData out;
   out.particles.resize(static_cast<std::size_t>(n));
   for_each_array(out.particles, [&](auto& a) { body.raw(a.data(), a.size() * sizeof(a[0])); });
+  const auto rates_current = body.value<std::uint64_t>();
+  if (rates_current > 1) throw std::runtime_error(name + ": inconsistent checkpoint layout (corrupted file)");
+  out.particles.rates_current = rates_current == 1;
   out.clock = body.value<RunClock>();
   const auto length = body.value<std::uint64_t>();
   if (length != payload - body.position())

@@ -1,7 +1,7 @@
 // Checkpoints (host only): the whole ParticleSet and RunClock in one binary file, so a restarted run
 // continues bit for bit. Layout (native byte order, checked on read):
 //   "IMPACTSPH-CKPT", u32 format version, u32 byte-order tag, u32 sizeof(double, Vec3d, Sym3d, RunClock),
-//   u64 file size, u64 particle count, every ParticleSet array raw, RunClock raw,
+//   u64 file size, u64 particle count, every ParticleSet array raw, u64 rates_current (0 or 1), RunClock raw,
 //   u64 fingerprint length + bytes, u64 FNV-1a 64 of everything before it.
 #pragma once
 #include <cstdint>
@@ -13,7 +13,7 @@
 
 namespace impactsph {
 
-inline constexpr std::uint32_t kCheckpointVersion = 4;  // 3: JH-2 bulking pressure; 4: plastic work per particle
+inline constexpr std::uint32_t kCheckpointVersion = 5;  // 5: the leapfrog's carried rates
 
 struct CheckpointData {
   ParticleSet particles;

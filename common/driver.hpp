@@ -38,7 +38,9 @@ struct RunResult {
   std::vector<BodySummary> bodies;   // at the end
   Totals initial_totals, final_totals;
   CaseObservables observables;       // what the case's [observables] asks for, at the end
-  bool settled = false;              // ended early: the residual velocity was steady (stop_when_settled)
+  bool settled = false;              // ended early, its verdict known (stop_when_settled): the residual
+                                     // velocity was steady, or the target held the projectile
+  bool held = false;                 // the target held the projectile (track_held)
 };
 
 // Runs scene.particles from the start (or the checkpoint) to spec.time.end. Throws DivergenceError after
@@ -47,6 +49,9 @@ RunResult run_simulation(Scene& scene, Stepper& stepper, const RunOptions& optio
 
 // The CPU model of this machine (/proc/cpuinfo "model name"), or "unknown".
 std::string cpu_model();
+
+// The step the driver takes with `remaining` (s) left to the end time and the stable step dt (s): no sliver.
+double end_step(double dt, double remaining);
 
 // The name of the checkpoint file inside an output folder.
 std::filesystem::path checkpoint_path(const std::filesystem::path& out_dir);

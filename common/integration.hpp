@@ -27,12 +27,13 @@ template <class Real> IMPACTSPH_HD Mat3<Real> mirror(const Mat3<Real>& t, Vec3<R
 // A symmetry plane x_axis = position is also a frictionless wall: a particle that crossed it (side is
 // +1 or -1, the side the model lies on) is reflected back with its normal velocity reversed (its mirror
 // image crossed the other way). Positions in m, velocities in m/s.
+// Returns whether it was reflected.
 template <class Pos, class Real>
-IMPACTSPH_HD void reflect_at_plane(Vec3<Pos>& x, Vec3<Real>& v, int axis, Pos position, Pos side) {
-  if ((x[axis] - position) * side < Pos(0)) {
-    x[axis] = Pos(2) * position - x[axis];
-    v[axis] = -v[axis];
-  }
+IMPACTSPH_HD bool reflect_at_plane(Vec3<Pos>& x, Vec3<Real>& v, int axis, Pos position, Pos side) {
+  if (!((x[axis] - position) * side < Pos(0))) return false;
+  x[axis] = Pos(2) * position - x[axis];
+  v[axis] = -v[axis];
+  return true;
 }
 
 // One reflection of a symmetry-plane image (the mirror particles of both solvers): the image

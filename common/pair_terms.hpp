@@ -161,10 +161,16 @@ IMPACTSPH_HD Real damaged_delta_sph_term(Real damage_i, Real damage_j, Real vol_
 
 // Continuity with delta-SPH (Marrone form, delta_sph.hpp): drho_i/dt = -rho_i tr(grad v_i) + delta h_i c0 D_i
 // (kg/m^3/s), D_i the sum of delta_sph_term over neighbours of the same material, c0 the reference sound
-// speed of i's material (m/s).
+// speed of i's material (m/s). Its two parts: the compression of the velocity field and the diffusion.
+template <class Real> IMPACTSPH_HD Real compression_density_rate(Real rho_i, const Mat3<Real>& grad_v) {
+  return -rho_i * grad_v.trace();
+}
+template <class Real> IMPACTSPH_HD Real diffusion_density_rate(Real delta, Real h_i, Real c0, Real diffusion) {
+  return delta * h_i * c0 * diffusion;
+}
 template <class Real>
 IMPACTSPH_HD Real continuity_rate(Real rho_i, const Mat3<Real>& grad_v, Real delta, Real h_i, Real c0, Real diffusion) {
-  return -rho_i * grad_v.trace() + delta * h_i * c0 * diffusion;
+  return compression_density_rate(rho_i, grad_v) + diffusion_density_rate(delta, h_i, c0, diffusion);
 }
 
 }  // namespace impactsph

@@ -34,6 +34,11 @@ using Mat3d = Mat3<double>;
   X(damage, "damage", Evolving)                             \
   X(temperature, "temperature", Evolving)                   \
   X(bulking_pressure, "bulking_pressure", Evolving)         \
+  X(acceleration, "", Evolving)                             \
+  X(energy_rate, "", Evolving)                              \
+  X(density_diffusion, "", Evolving)                        \
+  X(density_diffusion_before, "", Evolving)                 \
+  X(contact_power, "", Evolving)                            \
   X(body, "body_id", Constant)                              \
   X(material, "material_id", Constant)                      \
   X(fixed, "fixed", Constant)
@@ -61,9 +66,20 @@ struct ParticleSet {
   std::vector<double> damage;         // D in [0, 1]
   std::vector<double> temperature;    // K, raised by plastic work (F 3.14)
   std::vector<double> bulking_pressure; // Pa, JH-2 bulking increment dP (X eq 28); 0 for other materials
+  // The rates of the last evaluation, which the leapfrog carries into the first kick of the next step
+  // (common/stages.hpp, "Leapfrog"); meaningful where rates_current.
+  std::vector<Vec3d> acceleration;    // dv/dt, m/s^2
+  std::vector<double> energy_rate;    // de/dt, J/kg/s
+  std::vector<double> density_diffusion;  // the delta-SPH diffusion's share of drho/dt, kg/m^3/s
+  std::vector<double> density_diffusion_before;  // the same of the evaluation before, kg/m^3/s
+  std::vector<double> contact_power;  // power the particle's penalty pairs take from the motion, W
   std::vector<std::int32_t> body;     // index into Scene::bodies
   std::vector<std::int32_t> material; // index into Scene::materials
   std::vector<std::uint8_t> fixed;    // 1: clamped (velocity held at zero)
+  // Whether acceleration .. contact_power are the rates of the current state's last evaluation
+  // (a leapfrog step sets it; a scene as built, or a state changed by hand, has none and the next step
+  // evaluates first).
+  bool rates_current = false;
 
   std::size_t size() const { return pos.size(); }
   void resize(std::size_t n);

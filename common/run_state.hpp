@@ -26,6 +26,11 @@ struct RunClock {
   double settle_min = 0, settle_max = 0;  // m/s, range over the current window
   double settled_time = -1;             // s; -1: not settled
   std::int64_t settle_observations = 0;  // 64-bit: no padding, so a checkpoint holds no uninitialised bytes
+  // A projectile held by its target (case_observables.hpp, track_held).
+  double held_window_start = -1;        // s, since when it has been stopped or moving back with no target
+                                        // particle failing; -1: not so
+  double held_failed_fraction = 0;      // the target's failed mass fraction when that window began
+  double held_time = -1;                // s, the start of a full such window: the verdict held is known; -1: not yet
 };
 
 }  // namespace impactsph

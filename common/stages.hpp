@@ -190,6 +190,14 @@ template <class Real> IMPACTSPH_HD Sym3<Real> stress_over_rho2(const Sym3<Real>&
   return inv_rho2 * Sym3<Real>{S.xx - P, S.yy - P, S.zz - P, S.xy, S.yz, S.zx};
 }
 
+// The stress terms pass 2 reads of point s at density rho (kg/m^3), from its stress and pressure in the work
+// arrays: (S - P I) / rho^2, and the artificial stress from it (before any viscosity joins it).
+template <class Real>
+IMPACTSPH_HD void set_stress_terms(const StageParams<Real>& prm, const StagePoints<Real>& w, std::int64_t s, Real rho) {
+  w.A[s] = stress_over_rho2(w.S[s], w.p[s], rho);
+  if (prm.art.on()) w.R[s] = artificial_stress(prm.art, w.A[s]);
+}
+
 // ---------------------------------------------------------------------------------------------------
 // Pass 1: correction matrix L_i (F 2.13), velocity gradient, renormalised density gradient (F 2.19), the
 // gradients scaled by the damage factor 1 - D_ij (F 4.10) as the pass 2 terms are.
@@ -369,6 +377,7 @@ template <class Real>
 struct PointRates {
   Vec3<Real> vel, acc;   // dx/dt (m/s), dv/dt (m/s^2)
   Real drho, de;         // kg/m^3/s, J/kg/s
+  Real drho_diffusion;   // the delta-SPH diffusion's share of drho, kg/m^3/s
   Sym3<Real> dS;         // Jaumann deviatoric stress rate of the strength model (F 3.5-3.7), Pa/s
   Real strain_rate;      // equivalent strain rate, 1/s
   Real contact_power;    // W
@@ -382,7 +391,8 @@ IMPACTSPH_HD PointRates<Real> point_rates(const StageParams<Real>& prm, const St
   f.dS = deviatoric_stress_rate(mat, w.S[s], grad_v);
   f.strain_rate = equivalent_strain_rate(grad_v);
   const Real c0 = std::sqrt(eos_reference_sound_speed2(mat.eos));
-  f.drho = continuity_rate(w.rho[s], grad_v, prm.delta, w.h[s], c0, diffusion);
+  f.drho_diffusion = diffusion_density_rate(prm.delta, w.h[s], c0, diffusion);
+  f.drho = compression_density_rate(w.rho[s], grad_v) + f.drho_diffusion;
   f.de = de;
   f.contact_power = contact_power;
   if (fixed) {
@@ -416,6 +426,105 @@ IMPACTSPH_HD PlasticResult<Real> advance_point(const StageParams<Real>& prm, con
   e = e + dt * de;
   S = S + dt * dS;
   return trial_plastic_return(mat, S, eps_p, strain_rate, T, rho, e, bulking, D);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Leapfrog: kick-drift-kick (velocity Verlet) with a staggered deformation state, one evaluation of the
+// rates per step (numerics.integrator = "leapfrog"; docs/time-integration.md).
+//
+// A step from t_n to t_n+1 = t_n + dt, with a_n and (de/dt)_n carried from the evaluation of the step before:
+//   kick, drift   v_h = v_n + dt/2 a_n,   x_n+1 = x_n + dt v_h
+//   pass 1        at x_n+1 with v_h: the velocity gradient G of the half-step velocity
+//   deform        rho and S from t_n to t_n+1 at the rates G gives them (continuity, Jaumann; the state they
+//                 read taken at t_n+1/2 by the midpoint rule per particle) and the density's delta-SPH
+//                 diffusion (below), S through the plastic return
+//   pass 2        at x_n+1 with rho_n+1, S_n+1, the predicted v* = v_h + dt/2 a_n and e* = e_n + dt (de/dt)_n:
+//                 a_n+1, (de/dt)_n+1 and the delta-SPH diffusion
+//   kick          v_n+1 = v_h + dt/2 a_n+1,   e_n+1 = e_n + dt/2 ((de/dt)_n + (de/dt)_n+1)
+// Positions and velocities are velocity Verlet. Density and deviatoric stress are functions of the
+// deformation, as positions are: they live at the ends of the step with x and are advanced by the rates of
+// the half-step velocity, so that the elastic wave (v against S and rho) is integrated as a mass against
+// its spring is in velocity Verlet, stable up to omega dt = 2 without growth (the midpoint rule grows by
+// (omega dt)^4/8 a step). The internal energy lives with the velocity: its rate is the stress power of the
+// pairs, which takes the velocity at the end of the step (v*, to O(dt^2)), and the trapezoidal rule over
+// both ends then conserves kinetic plus internal energy to O(dt^2) per unit time without a secular drift.
+// The delta-SPH diffusion of the density field of pass 1 (at t_n) is known only after pass 2, while pass 2's
+// pressure already needs rho_n+1: the deform takes the diffusion at t_n+1/2 extrapolated from the last two
+// evaluations (of the density at t_n-1 and t_n-2), D = (5 D_n-1 - 3 D_n-2)/2, second order (both are carried;
+// the extrapolation is stable for the diffusion's small rates, lambda dt > -1/2).
+
+// A particle's kick and drift: the half-step velocity v_h, the position x_n+1 and the predicted velocity v*
+// and energy e*. A fixed particle does not move; a particle that crossed a symmetry plane is reflected back
+// with the normal components of v_h and v* reversed.
+template <class Real>
+struct KickDrift {
+  Vec3p x;                   // x_n+1, m
+  Vec3<Real> v_half, v_end;  // v_h and v*, m/s
+  Real e_end;                // e*, J/kg
+};
+template <class Real>
+IMPACTSPH_HD KickDrift<Real> kick_drift_point(const StageParams<Real>& prm, double dt, bool fixed, const Vec3p& x,
+                                              const Vec3<Real>& v, Real e, const Vec3<Real>& acc, Real de) {
+  const Real half_dt = static_cast<Real>(0.5 * dt);
+  KickDrift<Real> k;
+  k.v_half = v + half_dt * acc;
+  k.v_end = k.v_half + half_dt * acc;
+  k.x = fixed ? x : x + dt * cast3<double>(k.v_half);
+  for (int a = 0; a < prm.plane_count; ++a)
+    if (reflect_at_plane(k.x, k.v_half, prm.planes[a].axis, prm.planes[a].position, prm.planes[a].side)) {
+      const int axis = prm.planes[a].axis;
+      k.v_end[axis] = -k.v_end[axis];
+    }
+  k.e_end = e + static_cast<Real>(dt) * de;
+  return k;
+}
+
+// The history variables of the step start that the plastic return reads: plastic strain, temperature (K),
+// the JH-2 bulking pressure (Pa) and damage.
+template <class Real>
+struct StepHistory {
+  Real eps_p, T, bulking, D;
+};
+
+// The delta-SPH diffusion rate (kg/m^3/s) a deform takes: the rates of the last two evaluations D_n-1 and
+// D_n-2 extrapolated to the middle of the step.
+template <class Real> IMPACTSPH_HD Real diffusion_at_midstep(Real diffusion_last, Real diffusion_before) {
+  return Real(2.5) * diffusion_last - Real(1.5) * diffusion_before;
+}
+
+// A particle's density (kg/m^3) and deviatoric stress (Pa) from t_n to t_n+1 under the velocity gradient G
+// (1/s) of the half-step velocity: drho/dt = -rho tr G + diffusion (the continuity equation, its delta-SPH
+// diffusion rate given, kg/m^3/s) and the Jaumann rate of the strength model, each taken at the midpoint of
+// the step (rho_n+1/2, S_n+1/2 from a half step), the density floor, and S through the plastic return at the
+// step start's history, the equivalent strain rate of G and the new density and predicted energy e (J/kg).
+// Returns the return's increments.
+template <class Real>
+struct DeformInputs {
+  Mat3<Real> G;     // velocity gradient of the half-step velocity, 1/s
+  Real diffusion;   // delta-SPH diffusion rate of the density, kg/m^3/s
+  Real e;           // predicted specific internal energy at t_n+1, J/kg
+};
+template <class Real>
+IMPACTSPH_HD PlasticResult<Real> deform_point(const MaterialParams<Real>& mat, Real dt, const DeformInputs<Real>& in,
+                                              const StepHistory<Real>& history, Real& rho, Sym3<Real>& S) {
+  const Real half_dt = Real(0.5) * dt;
+  const Mat3<Real>& G = in.G;
+  const Real e = in.e;
+  const Real rho_half = rho + half_dt * (compression_density_rate(rho, G) + in.diffusion);
+  rho = advance_density(mat, rho, compression_density_rate(rho_half, G) + in.diffusion, dt);
+  const Sym3<Real> S_half = S + half_dt * deviatoric_stress_rate(mat, S, G);
+  S = S + dt * deviatoric_stress_rate(mat, S_half, G);
+  return trial_plastic_return(mat, S, history.eps_p, equivalent_strain_rate(G), history.T, rho, e, history.bulking,
+                              history.D);
+}
+
+// A particle's last kick: v_n+1 = v_h + dt/2 a_n+1 (m/s) and e_n+1 = e_n + dt/2 (de_start + de_end) (J/kg),
+// with a_n+1 (m/s^2) and the energy rates of the last evaluation and this one (J/kg/s).
+template <class Real>
+IMPACTSPH_HD void kick_point(Real dt, const Vec3<Real>& acc, Real de_start, Real de_end, Vec3<Real>& v, Real& e) {
+  const Real half_dt = Real(0.5) * dt;
+  v = v + half_dt * acc;
+  e = e + half_dt * (de_start + de_end);
 }
 
 // History variables of the final stage (plastic strain, heating, pressure, damage, bulking: F 4.7-4.9,

@@ -274,6 +274,8 @@ void Solver<Real>::pack_cluster_rates(const StagePoints<Real>& w) {
     if (limited) put_mat(p.grad_v, s < 0 ? Mat3<Real>::zero() : w.grad_v[s]);
     const Vec3<Real> gr = s < 0 ? Vec3<Real>{0, 0, 0} : w.grad_rho[s];
     p.grad_rho[0][l] = gr.x; p.grad_rho[1][l] = gr.y; p.grad_rho[2][l] = gr.z;
+    const Vec3<Real> v = s < 0 ? Vec3<Real>{0, 0, 0} : w.v[s];
+    p.v[0][l] = v.x; p.v[1][l] = v.y; p.v[2][l] = v.z;
     p.c[l] = s < 0 ? Real(0) : w.c[s];
     p.av[l] = s < 0 ? Real(0) : w.av[s];
     p.m[l] = s < 0 ? Real(0) : w.m[s];
@@ -321,7 +323,7 @@ void Solver<Real>::pass2_clusters(const Kernel& kernel, const StagePoints<Real>&
                                M{load_lane_ints<Real>(p.face) != 0}, art ? load_sym(q.R) : Mat3<L>::zero(),
                                limited ? load_mat(q.grad_v) : Mat3<L>::zero()};
       const L stress_factor = artificial_stress_pair_factor(prm.art, kernel.kind(), pair.r, hij);
-      const Vec3<L> vij = v_i - Vec3<L>{L::load(p.vx), L::load(p.vy), L::load(p.vz)};
+      const Vec3<L> vij = v_i - Vec3<L>{L::load(q.v[0]), L::load(q.v[1]), L::load(q.v[2])};
       Vec3<L> acc_j{L(0), L(0), L(0)};
       L de_j(0);
       add_momentum_energy_pair(side_i, side_j, prm.visc, gw, xij, vij, hij, L::load(q.m), stress_factor, acc_j, de_j);

@@ -79,6 +79,7 @@ struct alignas(64) ClusterRates {
   Real linv[9][kLanes<Real>];      // correction L^-1, row-major
   Real grad_v[9][kLanes<Real>];    // dv_a/dx_b (1/s), row-major
   Real grad_rho[3][kLanes<Real>];  // kg/m^4
+  Real v[3][kLanes<Real>];         // velocity, m/s (pass 2's: the leapfrog's differs from pass 1's)
   Real c[kLanes<Real>], av[kLanes<Real>], m[kLanes<Real>];  // sound speed (m/s), viscosity factor, mass (kg)
   std::int32_t mat[kLanes<Real>];  // material (-1: no point)
 };
@@ -99,7 +100,8 @@ template <class Real>
 class Solver final : public GpuStepper {
  public:
   static constexpr bool kFlush = sizeof(Real) < sizeof(double);  // float: subnormals to zero (launch.hpp)
-  Solver(const Scene& scene, const char* build) : numerics_(scene.spec.numerics) {
+  Solver(const Scene& scene, const char* build)
+      : numerics_(scene.spec.numerics), leapfrog_(scene.spec.numerics.integrator == Integrator::Leapfrog) {
     const bool dbl = sizeof(Real) == sizeof(double);
     name_ = std::string("gpu port (") + (dbl ? "double" : "float") + ", " + build + ")";
     for (const BodyInfo& b : scene.bodies) body_names_.push_back(b.name);
@@ -163,6 +165,7 @@ class Solver final : public GpuStepper {
   // are as uploaded), scattered by `original` into scene_order_ (kept, so that a copy allocates nothing on
   // the device), widened to double.
   void download(ParticleSet& p) {
+    p.rates_current = rates_current_;
     for_each_field_pair(d_, scene_order_, [&](const FieldInfo& f, const auto& dev, auto& ordered) {
       if (f.kind == FieldKind::Constant) return;
       ordered.resize(dev.size());
@@ -180,24 +183,81 @@ class Solver final : public GpuStepper {
 
   void step(ParticleSet& p, double dt) override {
     if (!resident_) upload(p);
-    // Pairs approach by at most dt vmax before the second evaluation, each particle moves at most
-    // dt/2 |v| to the midpoint: keep the sort while displacement + dt vmax stays under half the skin.
-    // With a variable smoothing length the support grows too: a pair the lists must hold is within
-    // reach(h_max now) + 2 (displacement + dt vmax) < reach(h_max at the sort) + skin.
-    const double vmax = max_speed();
+    if (leapfrog_ && !rates_current_) {
+      keep_sort(dt);
+      evaluate(state_view(d_), dt);
+      carry_rates();
+      d_.density_diffusion_before = d_.density_diffusion;  // the first diffusion stands for the one before too
+    }
+    keep_sort(dt);
+    if (leapfrog_) leapfrog_step(dt);
+    else midpoint_step(dt);
+    clock_.time(PhaseClock::Finish, [&] { finish(dt); });
+    if (!defer_) download(p);
+  }
+
+  // Sorts again unless the lists still hold every pair the step's evaluation can need: pairs approach by at
+  // most dt vmax before it (vmax the largest drift speed), while the particles have moved at most
+  // max_displacement since the sort. With a variable smoothing length the support grows too: a pair the
+  // lists must hold is within reach(h_max now) + 2 (displacement + dt vmax) < reach(h_max at the sort) + skin.
+  void keep_sort(double dt) {
+    const double vmax = max_drift_speed(dt);
     const double growth = variable_h_ && sorted_ ? search_reach(max_smoothing_length()) - reach_at_sort_ : 0.0;
     if (!sorted_ || !verlet_list_holds(max_displacement(), dt, vmax, growth, skin_))
       clock_.time(PhaseClock::Sort, [&] { sort_particles(); });
+  }
 
+  // The explicit midpoint rule (reference/solver.hpp): two evaluations.
+  void midpoint_step(double dt) {
     evaluate(state_view(d_), dt);
     clock_.time(PhaseClock::Advance, [&] { advance(state_view(d_), 0.5 * dt, view(y_half_), false); });
     evaluate(view(y_half_), dt);
     clock_.time(PhaseClock::Advance, [&] { advance(state_view(d_), dt, view(y1_), true); });
     clock_.time(PhaseClock::Check, [&] { check_state(dt); });
-    stats_.contact_work = dt * contact_power_sum();
+    stats_.contact_work = dt * contact_power_sum(contact_power_);
     swap_state(d_, y1_);
-    clock_.time(PhaseClock::Finish, [&] { finish(dt); });
-    if (!defer_) download(p);
+    rates_current_ = false;
+  }
+
+  // Kick-drift-kick leapfrog with the deformation state staggered (common/stages.hpp, "Leapfrog"): one
+  // evaluation, split by the deform of density and stress between its two passes.
+  void leapfrog_step(double dt) {
+    clock_.time(PhaseClock::Advance, [&] { kick_drift(dt); });
+    gather(view(y_half_));
+    gradients();
+    clock_.time(PhaseClock::Advance, [&] { deform(dt); });
+    restress(view(y1_));
+    rates(dt);
+    clock_.time(PhaseClock::Advance, [&] { kick(dt); });
+    clock_.time(PhaseClock::Check, [&] { check_state(dt); });
+    // The contact forces of both ends of the step each act for half of it.
+    stats_.contact_work = 0.5 * dt * (contact_power_sum(d_.contact_power) + contact_power_sum(contact_power_));
+    swap_state(d_, y1_);
+    carry_rates();
+  }
+
+  // The rates of the last evaluation become the particles' carried rates (O(1): the arrays swap).
+  void carry_rates() {
+    rate_acc_.swap(d_.acceleration);
+    rate_de_.swap(d_.energy_rate);
+    d_.density_diffusion_before.swap(d_.density_diffusion);
+    rate_drho_diffusion_.swap(d_.density_diffusion);
+    contact_power_.swap(d_.contact_power);
+    rates_current_ = true;
+  }
+
+  // The largest speed a particle drifts with in the step: |v_n + dt/2 a_n| in the leapfrog whose carried
+  // rates are current, |v_n| otherwise.
+  double max_drift_speed(double dt_in) {
+    const StateView<Real> y = state_view(d_);
+    const Vec3<Real>* acc = raw(d_.acceleration);
+    const bool kick = leapfrog_ && rates_current_;
+    const Real half_dt = static_cast<Real>(0.5 * dt_in);
+    Real* out = raw(scratch_real_);
+    launch<kFlush>("speed", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      out[i] = kick ? norm(y.vel[i] + half_dt * acc[i]) : norm(y.vel[i]);
+    });
+    return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n_, Real(0), MaxOf{}));
   }
 
  // The rest is public only because nvcc's extended (device) lambdas may not live in private members.
@@ -211,9 +271,10 @@ class Solver final : public GpuStepper {
       for (std::size_t i = 0; i < host.size(); ++i) staged[i] = to_device<D>(host[i]);
       dev = staged;
     });
+    rates_current_ = p.rates_current;
     original_.resize(n);
     thrust::sequence(original_.begin(), original_.end());
-    for (DVec<Real>* a : {&rate_drho_, &rate_de_, &strain_rate_, &contact_power_, &d_eps_p_, &d_plastic_work_,
+    for (DVec<Real>* a : {&rate_drho_, &rate_drho_diffusion_, &rate_de_, &strain_rate_, &contact_power_, &d_eps_p_, &d_plastic_work_,
                           &d_temperature_, &history_rate_, &scratch_real_})
       a->resize(n);
     rate_pos_.resize(n); rate_acc_.resize(n); rate_S_.resize(n); grad_v_.resize(n);
@@ -249,11 +310,11 @@ class Solver final : public GpuStepper {
     return impactsph::search_reach(static_cast<double>(kernel_support(h_max)), contact_reach_, contact_srad_, h_max);
   }
 
-  // The contact power summed over the particles in the scene's order (W), so that the sum does not depend
-  // on the order of the last sort either.
-  double contact_power_sum() {
+  // A contact power (per particle, W, in the sorted order) summed over the particles in the scene's order, so
+  // that the sum does not depend on the order of the last sort either.
+  double contact_power_sum(DVec<Real>& contact_power) {
     if (contact_reach_ == 0 && contact_srad_ == 0) return 0.0;
-    const Real* power = raw(contact_power_);
+    const Real* power = raw(contact_power);
     const std::int32_t* orig = raw(original_);
     Real* out = raw(scratch_real_);
     launch<kFlush>("contact_power", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[orig[i]] = power[i]; });
@@ -266,13 +327,6 @@ class Solver final : public GpuStepper {
   double min_smoothing_length() {
     return static_cast<double>(
         thrust::reduce(d_.h.begin(), d_.h.begin() + n_, std::numeric_limits<Real>::max(), MinOf{}));
-  }
-
-  double max_speed() {
-    const StateView<Real> y = state_view(d_);
-    Real* out = raw(scratch_real_);
-    launch<kFlush>("speed", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) { out[i] = norm(y.vel[i]); });
-    return static_cast<double>(thrust::reduce(scratch_real_.begin(), scratch_real_.begin() + n_, Real(0), MaxOf{}));
   }
 
   double max_displacement() {
@@ -330,6 +384,18 @@ class Solver final : public GpuStepper {
   // its own after the SPH pairs (its sums in the same list order as before).
   template <KernelKind K>
   void evaluate_with(const StateView<Real>& state, double dt_in);
+  void gather(const StateView<Real>& state);
+  template <KernelKind K> void gradient_pass();
+  template <KernelKind K> void rate_pass(double dt_in);
+  void restress(const StateView<Real>& state);
+  void gradients() {
+    if (params_.kernel == KernelKind::WendlandC2) gradient_pass<KernelKind::WendlandC2>();
+    else gradient_pass<KernelKind::CubicSpline>();
+  }
+  void rates(double dt_in) {
+    if (params_.kernel == KernelKind::WendlandC2) rate_pass<KernelKind::WendlandC2>(dt_in);
+    else rate_pass<KernelKind::CubicSpline>(dt_in);
+  }
 
 
   // y = y0 + dt f (advance_point, stages.hpp).
@@ -371,6 +437,69 @@ class Solver final : public GpuStepper {
         h_T[i] = pr.d_T;
         h_rate[i] = reps[i];
       }
+    });
+  }
+
+  // The leapfrog's first kick and drift (kick_drift_point, stages.hpp): into y_half_ what pass 1 reads (x_n+1,
+  // v_h and the deformation state of t_n), into y1_ what pass 2 will read (x_n+1, v*, e*; rho and S are
+  // deform's).
+  void kick_drift(double dt) {
+    const StageParams<Real> prm = params_;
+    const StateView<Real> y0 = state_view(d_), half = view(y_half_), end = view(y1_);
+    const Vec3<Real>* acc = raw(d_.acceleration);
+    const Real* de = raw(d_.energy_rate);
+    const std::uint8_t* fixed = raw(d_.fixed);
+    launch<kFlush>("kick_drift", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const KickDrift<Real> k = kick_drift_point(prm, dt, fixed[i] != 0, y0.pos[i], y0.vel[i], y0.energy[i], acc[i], de[i]);
+      half.pos[i] = k.x; half.vel[i] = k.v_half; half.rho[i] = y0.rho[i]; half.energy[i] = y0.energy[i];
+      half.S[i] = y0.S[i];
+      end.pos[i] = k.x; end.vel[i] = k.v_end; end.rho[i] = y0.rho[i]; end.energy[i] = k.e_end; end.S[i] = y0.S[i];
+    });
+  }
+
+  // Density and stress from t_n to t_n+1 under pass 1's velocity gradient (deform_point, stages.hpp), in y1_,
+  // and the plastic return's increments for finish().
+  void deform(double dt_in) {
+    const MaterialParams<Real>* mats = raw(materials_);
+    const Real dt = static_cast<Real>(dt_in);
+    const StateView<Real> end = view(y1_);
+    const Mat3<Real>* grad_v = raw(grad_v_);
+    const Real* eps_p = raw(d_.plastic_strain);
+    const Real* T = raw(d_.temperature);
+    const Real* D = raw(d_.damage);
+    const Real* bulking = raw(d_.bulking_pressure);
+    const std::int32_t* material = raw(d_.material);
+    Real* h_eps = raw(d_eps_p_);
+    Real* h_work = raw(d_plastic_work_);
+    Real* h_T = raw(d_temperature_);
+    Real* h_rate = raw(history_rate_);
+    const Real* diffusion_last = raw(d_.density_diffusion);
+    const Real* diffusion_before = raw(d_.density_diffusion_before);
+    launch<kFlush>("deform", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      const DeformInputs<Real> in{grad_v[i], diffusion_at_midstep(diffusion_last[i], diffusion_before[i]), end.energy[i]};
+      const PlasticResult<Real> pr = deform_point(mats[material[i]], dt, in, StepHistory<Real>{eps_p[i], T[i], bulking[i], D[i]},
+                                                  end.rho[i], end.S[i]);
+      h_eps[i] = pr.d_eps_p;
+      h_work[i] = pr.plastic_work;
+      h_T[i] = pr.d_T;
+      h_rate[i] = equivalent_strain_rate(grad_v[i]);
+    });
+  }
+
+  // The leapfrog's last kick (kick_point, stages.hpp): v, e and the density's diffusion in y1_, from the half
+  // state and the rates of this step's evaluation.
+  void kick(double dt_in) {
+    const Real dt = static_cast<Real>(dt_in);
+    const StateView<Real> y0 = state_view(d_), half = view(y_half_), end = view(y1_);
+    const Vec3<Real>* acc = raw(rate_acc_);
+    const Real* de_start = raw(d_.energy_rate);
+    const Real* de_end = raw(rate_de_);
+    launch<kFlush>("kick", n_, [=] IMPACTSPH_LAMBDA(std::int64_t i) {
+      Vec3<Real> v = half.vel[i];
+      Real e = y0.energy[i];
+      kick_point(dt, acc[i], de_start[i], de_end[i], v, e);
+      end.vel[i] = v;
+      end.energy[i] = e;
     });
   }
 
@@ -473,13 +602,15 @@ class Solver final : public GpuStepper {
 
   // Real particles, in the order of the last sort (original_ maps to the scene's order).
   DeviceParticles<Real> d_;         // the fields of ParticleSet, the state of the step start among them
-  StateArrays<Real> y_half_, y1_;   // the midpoint and the step end
+  StateArrays<Real> y_half_, y1_;   // the midpoint (leapfrog: what pass 1 reads) and the step end
+  bool leapfrog_ = false;           // numerics.integrator: leapfrog (else the midpoint rule)
+  bool rates_current_ = false;      // d_'s carried rates are those of its state (ParticleSet::rates_current)
   DVec<std::int32_t> original_;
   DeviceParticles<Real> scene_order_;  // download's scratch: the changing fields in the scene's order
   DVec<Vec3p> pos_at_sort_;
   // Rates of an evaluation and the history of the final stage.
   DVec<Vec3<Real>> rate_pos_, rate_acc_;
-  DVec<Real> rate_drho_, rate_de_, strain_rate_, contact_power_, d_eps_p_, d_plastic_work_, d_temperature_, history_rate_,
+  DVec<Real> rate_drho_, rate_drho_diffusion_, rate_de_, strain_rate_, contact_power_, d_eps_p_, d_plastic_work_, d_temperature_, history_rate_,
       scratch_real_;
   DVec<Sym3<Real>> rate_S_;
   DVec<Mat3<Real>> grad_v_;

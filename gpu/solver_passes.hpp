@@ -42,15 +42,20 @@ constexpr int kRateSums = 5;
 template <class Real>
 template <KernelKind K>
 void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
+  gather(state);
+  gradient_pass<K>();
+  rate_pass<K>(dt_in);
+}
+
+// The work arrays of an evaluation at `state`, in sorted order: reals from the state, ghosts as mirror images
+// of their source (gather_point, stages.hpp).
+template <class Real>
+void Solver<Real>::gather(const StateView<Real>& state) {
   const std::int64_t n = n_, total = n_ + ghosts_;
   const StateView<Real> y = state;
   const StagePoints<Real> w = points();
-  const FixedKernel<K> kernel{};
-  const std::int64_t* list_offset = raw(list_offset_);  // Verlet list of real i: slots list[list_offset[i] ..
-  const std::int32_t* list = raw(list_);                 // list_offset[i+1])
   const MaterialParams<Real>* mats = raw(materials_);
   const StageParams<Real> prm = params_;
-  const Real dt = static_cast<Real>(dt_in);
   const std::int32_t* order = raw(order_);
   const std::int32_t* slot = raw(slot_of_);
   const std::int32_t* gsrc = raw(ghost_source_);
@@ -63,10 +68,6 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
   const Real* bulking = raw(d_.bulking_pressure);
   const std::int32_t* material = raw(d_.material);
   const std::int32_t* body = raw(d_.body);
-  const std::uint8_t* fixed = raw(d_.fixed);
-
-  // Work arrays in sorted order: reals from the state, ghosts as mirror images of their source
-  // (gather_point, stages.hpp).
   clock_.begin();
   launch<kFlush>("gather", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
     const std::int64_t pnt = order[s];
@@ -91,13 +92,67 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
     w.let_go[s] = pnt < n ? let_go : 0u;
     w.image_walls[s] = image_walls;
     w.vol[s] = m / rho;
-    w.A[s] = stress_over_rho2(S, g.P, rho);
-    if (prm.art.on()) w.R[s] = artificial_stress(prm.art, w.A[s]);  // before any viscosity joins A
+    set_stress_terms(prm, w, s, rho);
   });
-
   clock_.end(PhaseClock::Gather);
+}
 
-  // Pass 1 (stages.hpp): each real's gradients from its list, then the ghosts' mirrored from their sources.
+// Pass 2's view of the deformed state (rho_n+1, e*, S_n+1, v*; the leapfrog, common/stages.hpp) after pass 1
+// of the half state: each point's pressure, sound speed, stress at its damage and velocity (ghosts as
+// mirror images of their source), and (S - P I)/rho^2 at the new density with the artificial stress and
+// the bulk viscosity of pass 1's velocity gradient (a ghost's that of its source: isotropic). The density,
+// volume and gradients of pass 1 stay: pass 2's delta-SPH diffusion is that of the density field of pass 1.
+template <class Real>
+void Solver<Real>::restress(const StateView<Real>& state) {
+  const std::int64_t n = n_, total = n_ + ghosts_;
+  const StateView<Real> y = state;
+  const StagePoints<Real> w = points();
+  const MaterialParams<Real>* mats = raw(materials_);
+  const StageParams<Real> prm = params_;
+  const std::int32_t* order = raw(order_);
+  const std::int32_t* gsrc = raw(ghost_source_);
+  const std::int32_t* gmask = raw(ghost_mask_);
+  const Vec3p* gsign = raw(ghost_sign_);
+  const Vec3p* gshift = raw(ghost_shift_);
+  const Real* damage = raw(d_.damage);
+  const Real* bulking = raw(d_.bulking_pressure);
+  const Real* h = raw(d_.h);
+  const std::int32_t* material = raw(d_.material);
+  const Mat3<Real>* grad_v = raw(grad_v_);
+  clock_.begin();
+  launch<kFlush>("restress", total, [=] IMPACTSPH_LAMBDA(std::int64_t s) {
+    const std::int64_t pnt = order[s];
+    const std::int64_t i = pnt < n ? pnt : gsrc[pnt - n];
+    const GatheredPoint<Real> g = gather_point(mats[material[i]], y.rho[i], y.energy[i], bulking[i], damage[i], y.S[i]);
+    Sym3<Real> S = g.S;
+    Vec3<Real> v = y.vel[i];
+    if (pnt >= n) {
+      const unsigned image_walls = static_cast<unsigned>(gmask[pnt - n]) & prm.wall_planes;
+      const MirroredPoint<Real> image =
+          mirror_point(gsign[pnt - n], gshift[pnt - n], image_walls, 0u, y.pos[i], v, S, Real(0));
+      v = image.v; S = image.S;
+    }
+    w.v[s] = v; w.p[s] = g.P; w.c[s] = g.c; w.S[s] = S;
+    set_stress_terms(prm, w, s, y.rho[i]);
+    if (prm.bulk_on) add_bulk_viscosity(prm.bulk, grad_v[i].trace(), y.rho[i], g.c, h[i], w.A[s]);
+  });
+  clock_.end(PhaseClock::Gather);
+}
+
+// Pass 1 (stages.hpp): each real's gradients from its list, then the ghosts' mirrored from their sources.
+template <class Real>
+template <KernelKind K>
+void Solver<Real>::gradient_pass() {
+  const std::int64_t n = n_;
+  const StagePoints<Real> w = points();
+  const FixedKernel<K> kernel{};
+  const std::int64_t* list_offset = raw(list_offset_);  // Verlet list of real i: slots list[list_offset[i] ..
+  const std::int32_t* list = raw(list_);                 // list_offset[i+1])
+  const MaterialParams<Real>* mats = raw(materials_);
+  const StageParams<Real> prm = params_;
+  const std::int32_t* slot = raw(slot_of_);
+  const std::int32_t* gsrc = raw(ghost_source_);
+  const Vec3p* gsign = raw(ghost_sign_);
   clock_.begin();
   Mat3<Real>* grad_v = raw(grad_v_);
   std::int32_t* fell = raw(fallback_);
@@ -137,14 +192,33 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
       n ? static_cast<double>(thrust::reduce(neighbour_count_.begin(), neighbour_count_.begin() + n, std::int64_t(0))) /
               static_cast<double>(n)
         : 0.0;
+}
 
-  // Pass 2 (stages.hpp): the SPH pairs in a loop whose only carried values are sums (IMPACTSPH_SIMD_SUMS,
-  // launch.hpp), then penalty contact, rare and heavy, in a loop of its own (its sums in list order), then
-  // the rates.
+// Pass 2 (stages.hpp): the SPH pairs in a loop whose only carried values are sums (IMPACTSPH_SIMD_SUMS,
+// launch.hpp), then penalty contact, rare and heavy, in a loop of its own (its sums in list order), then
+// the rates.
+template <class Real>
+template <KernelKind K>
+void Solver<Real>::rate_pass(double dt_in) {
+  const std::int64_t n = n_;
+  const StagePoints<Real> w = points();
+  const FixedKernel<K> kernel{};
+  const std::int64_t* list_offset = raw(list_offset_);
+  const std::int32_t* list = raw(list_);
+  const MaterialParams<Real>* mats = raw(materials_);
+  const StageParams<Real> prm = params_;
+  const Real dt = static_cast<Real>(dt_in);
+  const std::int32_t* slot = raw(slot_of_);
+  const std::uint8_t* fixed = raw(d_.fixed);
+  const Mat3<Real>* grad_v = raw(grad_v_);
+#if !defined(__CUDACC__)
+  const bool clusters = takes_cluster_pairs();
+#endif
   clock_.begin();
   Vec3<Real>* rpos = raw(rate_pos_);
   Vec3<Real>* racc = raw(rate_acc_);
   Real* rdrho = raw(rate_drho_);
+  Real* rdiff = raw(rate_drho_diffusion_);
   Real* rde = raw(rate_de_);
   Sym3<Real>* rS = raw(rate_S_);
   Real* reps = raw(strain_rate_);
@@ -184,7 +258,8 @@ void Solver<Real>::evaluate_with(const StateView<Real>& state, double dt_in) {
       for (std::int64_t k = k0; k < k1; ++k) add_contact_neighbour(w, mats, row, list[k], dt, contact, power);
     const PointRates<Real> r = point_rates(prm, w, mats[row.mat], s, grad_v[i], Vec3<Real>{sum[0], sum[1], sum[2]},
                                            sum[3], sum[4], contact, power, fixed[i] != 0);
-    rpos[i] = r.vel; racc[i] = r.acc; rdrho[i] = r.drho; rde[i] = r.de; rS[i] = r.dS; reps[i] = r.strain_rate;
+    rpos[i] = r.vel; racc[i] = r.acc; rdrho[i] = r.drho; rdiff[i] = r.drho_diffusion; rde[i] = r.de; rS[i] = r.dS;
+    reps[i] = r.strain_rate;
     rcp[i] = r.contact_power;
   });
   clock_.end(PhaseClock::Pass2);

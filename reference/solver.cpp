@@ -10,7 +10,8 @@
 namespace impactsph::reference {
 
 ReferenceSolver::ReferenceSolver(const Scene& scene)
-    : numerics_(scene.spec.numerics), params_(make_stage_params<double>(scene)),
+    : numerics_(scene.spec.numerics), leapfrog_(scene.spec.numerics.integrator == Integrator::Leapfrog),
+      params_(make_stage_params<double>(scene)),
       contacts_(make_pair_contacts<double>(scene)), smoothing_(make_body_smoothing<double>(scene)),
       contact_reach_(contact_reach(scene)), materials_(scene.materials),
       nonlocal_grid_(build_nonlocal_grid(scene.particles, scene.materials)) {
@@ -78,12 +79,18 @@ void ReferenceSolver::candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std
 }
 
 void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
+  gather(y);
+  gradient_pass();
+  rate_pass(f, dt);
+}
+
+// The work arrays of an evaluation at state y: real particles (gather_point), then ghosts from their sources;
+// each point's volume, (S - P I)/rho^2 and artificial stress.
+void ReferenceSolver::gather(const State& y) {
   const std::size_t n = y.pos.size();
   const std::size_t total = n + ghosts_.size();
   const std::int64_t ni = static_cast<std::int64_t>(n);
   const MaterialParams<double>* mats = materials_.data();
-
-  // Fill the work arrays: real particles (gather_point), then ghosts from their sources.
   x_.resize(total); v_.resize(total); rho_.resize(total); pressure_.resize(total); sound_speed_.resize(total);
   m_.resize(total); hh_.resize(total); mat_.resize(total); s_over_rho2_.resize(total); l_inverse_.resize(total);
   grad_rho_.resize(total); grad_v_.resize(total); volume_.resize(total); bb_.resize(total); damage_all_.resize(total);
@@ -114,20 +121,25 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   }
   // Artificial stress of each particle and ghost from its own stress, before any viscosity joins it.
   artificial_stress_.resize(params_.art.on() ? total : 0);
+  const StagePoints<double> w = points();
   parallel_for(static_cast<std::int64_t>(total), [&](std::int64_t i) {
     volume_[i] = m_[i] / rho_[i];
-    s_over_rho2_[i] = stress_over_rho2(stress_[i], pressure_[i], rho_[i]);
-    if (params_.art.on()) artificial_stress_[i] = artificial_stress(params_.art, s_over_rho2_[i]);
+    set_stress_terms(params_, w, i, rho_[i]);
   });
+}
 
+// Pass 1 (stages.hpp): each real's gradients from its neighbours, then the ghosts' mirrored from their sources.
+// It sorts the row's list entries as it goes (pair_j_): the SPH pairs to the front, the penalty contact
+// pairs to the back (in reverse), those outside the support and behind let-go walls nowhere.
+void ReferenceSolver::gradient_pass() {
+  const std::size_t n = x_.size() - ghosts_.size();
+  const std::int64_t ni = static_cast<std::int64_t>(n);
+  const MaterialParams<double>* mats = materials_.data();
   const StagePoints<double> w = points();
   const RuntimeKernel kernel{params_.kernel};
   const std::int64_t* off = neighbours_.offsets.data();
   const std::int32_t* nb = neighbours_.indices.data();
 
-  // Pass 1 (stages.hpp): each real's gradients from its neighbours, then the ghosts' mirrored from their sources.
-  // It sorts the row's list entries as it goes (pair_j_): the SPH pairs to the front, the penalty contact
-  // pairs to the back (in reverse), those outside the support and behind let-go walls nowhere.
   row_neighbours_.resize(n);
   fell_back_.resize(n);
   pair_j_.resize(neighbours_.indices.size());
@@ -182,11 +194,19 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
   stats_.mean_neighbours = ni ? static_cast<double>(pairs) / static_cast<double>(ni) : 0.0;
   for (std::size_t k = 0; k < ghosts_.size(); ++k)
     mirror_gradient_row(params_, w, static_cast<std::int64_t>(n + k), ghosts_[k].source, ghosts_[k].sign);
+}
 
-  // Pass 2 (stages.hpp): the SPH pairs of each real that pass 1 kept, then its penalty contact pairs in list
-  // order (the two add into sums of their own), then its rates.
-  f.vel.resize(n); f.acc.resize(n); f.drho.resize(n); f.denergy.resize(n); f.dstress.resize(n);
-  f.strain_rate.resize(n); f.contact_power.resize(n);
+// Pass 2 (stages.hpp): the SPH pairs of each real that pass 1 kept, then its penalty contact pairs in list
+// order (the two add into sums of their own), then its rates.
+void ReferenceSolver::rate_pass(Rates& f, double dt) {
+  const std::size_t n = x_.size() - ghosts_.size();
+  const std::int64_t ni = static_cast<std::int64_t>(n);
+  const MaterialParams<double>* mats = materials_.data();
+  const StagePoints<double> w = points();
+  const RuntimeKernel kernel{params_.kernel};
+  const std::int64_t* off = neighbours_.offsets.data();
+  f.vel.resize(n); f.acc.resize(n); f.drho.resize(n); f.drho_diffusion.resize(n); f.denergy.resize(n);
+  f.dstress.resize(n); f.strain_rate.resize(n); f.contact_power.resize(n);
   const KernelKind kind = kernel.kind();
   parallel_for(ni, [&](std::int64_t i) IMPACTSPH_FLATTEN {
     const RateRow<double> row = rate_row(params_, w, mats, i);
@@ -201,7 +221,8 @@ void ReferenceSolver::evaluate(const State& y, Rates& f, double dt) {
       add_contact_neighbour(w, mats, row, pair_j_[k], dt, contact, contact_power);
     const PointRates<double> r = point_rates(params_, w, mats[mat_[i]], i, grad_v_[i], acc, de, diffusion, contact,
                                              contact_power, fixed_[i] != 0);
-    f.vel[i] = r.vel; f.acc[i] = r.acc; f.drho[i] = r.drho; f.denergy[i] = r.de; f.dstress[i] = r.dS;
+    f.vel[i] = r.vel; f.acc[i] = r.acc; f.drho[i] = r.drho; f.drho_diffusion[i] = r.drho_diffusion;
+    f.denergy[i] = r.de; f.dstress[i] = r.dS;
     f.strain_rate[i] = r.strain_rate; f.contact_power[i] = r.contact_power;
   });
 }
@@ -286,7 +307,7 @@ void ReferenceSolver::update_neighbours(const ParticleSet& p, double dt) {
   const std::size_t n = p.size();
   const std::int64_t ni = static_cast<std::int64_t>(n);
   const bool same = list_valid_ && pos_at_build_.size() == n;
-  const double vmax = std::max(0.0, parallel_max(ni, [&](std::int64_t i) { return norm(p.vel[i]); }));
+  const double vmax = std::max(0.0, parallel_max(ni, [&](std::int64_t i) { return norm(drift_velocity(p, i, dt)); }));
   const double moved =
       same ? std::max(0.0, parallel_max(ni, [&](std::int64_t i) { return norm(p.pos[i] - pos_at_build_[i]); })) : 0.0;
   const double reach = search_reach();
@@ -310,31 +331,171 @@ std::size_t ReferenceSolver::velocity_gradients(const ParticleSet& p, std::vecto
   return stats_.correction_fallbacks;
 }
 
+// The velocity a particle drifts with in the step: v_n + dt/2 a_n in the leapfrog (whose carried a_n is
+// current), v_n before the first evaluation and in the midpoint rule.
+Vec3d ReferenceSolver::drift_velocity(const ParticleSet& p, std::int64_t i, double dt) const {
+  return leapfrog_ && p.rates_current ? p.vel[i] + 0.5 * dt * p.acceleration[i] : p.vel[i];
+}
+
 void ReferenceSolver::step(ParticleSet& p, double dt) {
-  const std::size_t n = p.size();
   load_constants(p);
+  update_neighbours(p, dt);
+  if (leapfrog_) leapfrog_step(p, dt);
+  else midpoint_step(p, dt);
+  finish_history(p, dt);
+}
+
+// The explicit midpoint rule: y_1/2 = y_n + dt/2 f(y_n), y_n+1 = y_n + dt f(y_1/2); two evaluations.
+void ReferenceSolver::midpoint_step(ParticleSet& p, double dt) {
+  const std::size_t n = p.size();
   State& y0 = y0_;
   y0.pos = p.pos; y0.vel = p.vel; y0.rho = p.rho; y0.energy = p.energy; y0.dev_stress = p.dev_stress;
-  update_neighbours(p, dt);
-
   Rates& f = rates_;
   State& y_half = y_half_;
   State& y1 = y1_;
-  History& history = history_;
   evaluate(y0, f, dt);
   advance(y0, f, 0.5 * dt, y_half, nullptr);
   evaluate(y_half, f, dt);
-  advance(y0, f, dt, y1, &history);
+  advance(y0, f, dt, y1, &history_);
   check_state(y1, dt);
   double contact_power = 0;
   for (std::size_t i = 0; i < n; ++i) contact_power += f.contact_power[i];
   stats_.contact_work = dt * contact_power;
-
+  p.rates_current = false;
   std::swap(p.pos, y1.pos);
   std::swap(p.vel, y1.vel);
   std::swap(p.rho, y1.rho);
   std::swap(p.energy, y1.energy);
   std::swap(p.dev_stress, y1.dev_stress);
+}
+
+// The rates of the particles' current state into their carried rate fields (the leapfrog's first step, or
+// a state whose rates are not current).
+void ReferenceSolver::evaluate_carried_rates(ParticleSet& p, double dt) {
+  State& y0 = y0_;
+  y0.pos = p.pos; y0.vel = p.vel; y0.rho = p.rho; y0.energy = p.energy; y0.dev_stress = p.dev_stress;
+  evaluate(y0, rates_, dt);
+  carry_rates(p);
+  p.density_diffusion_before = p.density_diffusion;  // the first diffusion stands for the one before too
+  // The list was checked for a drift at v_n; the drift at v_n + dt/2 a_n may need a new one.
+  update_neighbours(p, dt);
+}
+
+// The rates of the last evaluation become the particles' carried rates (O(1): the arrays swap).
+void ReferenceSolver::carry_rates(ParticleSet& p) {
+  Rates& f = rates_;
+  std::swap(p.acceleration, f.acc);
+  std::swap(p.energy_rate, f.denergy);
+  std::swap(p.density_diffusion_before, p.density_diffusion);
+  std::swap(p.density_diffusion, f.drho_diffusion);
+  std::swap(p.contact_power, f.contact_power);
+  p.rates_current = true;
+}
+
+// Kick-drift-kick leapfrog with the deformation state staggered (common/stages.hpp, "Leapfrog"): one
+// evaluation, split by the deform of density and stress between its two passes.
+void ReferenceSolver::leapfrog_step(ParticleSet& p, double dt) {
+  if (!p.rates_current) evaluate_carried_rates(p, dt);
+  const std::int64_t n = static_cast<std::int64_t>(p.size());
+  State& half = y_half_;  // x_n+1, v_h and the deformation state of t_n: what pass 1 reads
+  State& y1 = y1_;        // x_n+1, v*, rho_n+1, e*, S_n+1: what pass 2 reads; then the step end
+  for (State* s : {&half, &y1}) resize_state(*s, static_cast<std::size_t>(n));
+  parallel_for(n, [&](std::int64_t i) IMPACTSPH_FLATTEN {
+    const KickDrift<double> k = kick_drift_point(params_, dt, fixed_[i] != 0, p.pos[i], p.vel[i], p.energy[i],
+                                                 p.acceleration[i], p.energy_rate[i]);
+    half.pos[i] = y1.pos[i] = k.x;
+    half.vel[i] = k.v_half;
+    y1.vel[i] = k.v_end;
+    half.rho[i] = y1.rho[i] = p.rho[i];
+    half.energy[i] = p.energy[i];
+    y1.energy[i] = k.e_end;
+    half.dev_stress[i] = y1.dev_stress[i] = p.dev_stress[i];
+  });
+  gather(half);
+  gradient_pass();
+  History& history = history_;
+  resize_history(static_cast<std::size_t>(n));
+  parallel_for(n, [&](std::int64_t i) IMPACTSPH_FLATTEN {
+    const Mat3d& G = grad_v_[static_cast<std::size_t>(i)];
+    const DeformInputs<double> in{G, diffusion_at_midstep(p.density_diffusion[i], p.density_diffusion_before[i]),
+                                  y1.energy[i]};
+    const PlasticResult<double> pr = deform_point(materials_[static_cast<std::size_t>(material_[i])], dt, in,
+                                                  step_history(i), y1.rho[i], y1.dev_stress[i]);
+    history.d_eps_p[i] = pr.d_eps_p;
+    history.d_plastic_work[i] = pr.plastic_work;
+    history.d_temperature[i] = pr.d_T;
+    history.strain_rate[i] = equivalent_strain_rate(G);
+  });
+  restress(y1);
+  Rates& f = rates_;
+  rate_pass(f, dt);
+  parallel_for(n, [&](std::int64_t i) IMPACTSPH_FLATTEN {
+    y1.vel[i] = half.vel[i];
+    y1.energy[i] = p.energy[i];
+    kick_point(dt, f.acc[i], p.energy_rate[i], f.denergy[i], y1.vel[i], y1.energy[i]);
+  });
+  check_state(y1, dt);
+  // The contact forces of both ends of the step each act for half of it.
+  double contact_power = 0;
+  for (std::int64_t i = 0; i < n; ++i) contact_power += p.contact_power[i] + f.contact_power[i];
+  stats_.contact_work = 0.5 * dt * contact_power;
+  std::swap(p.pos, y1.pos);
+  std::swap(p.vel, y1.vel);
+  std::swap(p.rho, y1.rho);
+  std::swap(p.energy, y1.energy);
+  std::swap(p.dev_stress, y1.dev_stress);
+  carry_rates(p);
+}
+
+// Pass 2's view of the deformed state y (rho_n+1, e*, S_n+1, v*) after pass 1 of the half state: the reals'
+// pressure, sound speed, stress at their damage and velocity, the ghosts' from their sources, then (S - P I)/rho^2
+// at the new density with the artificial stress and the bulk viscosity of pass 1's velocity gradient. The
+// density, volume and gradients of pass 1 stay: pass 2's delta-SPH diffusion is that of the density field of
+// pass 1.
+void ReferenceSolver::restress(const State& y) {
+  const std::size_t n = y.pos.size();
+  const std::int64_t ni = static_cast<std::int64_t>(n);
+  const MaterialParams<double>* mats = materials_.data();
+  const StagePoints<double> w = points();
+  parallel_for(ni, [&](std::int64_t i) IMPACTSPH_FLATTEN {
+    const GatheredPoint<double> g =
+        gather_point(mats[mat_[i]], y.rho[i], y.energy[i], bulking_[i], damage_all_[i], y.dev_stress[i]);
+    pressure_[i] = g.P; sound_speed_[i] = g.c; stress_[i] = g.S; v_[i] = y.vel[i];
+    set_stress_terms(params_, w, i, y.rho[i]);
+    if (params_.bulk_on) add_bulk_viscosity(params_.bulk, grad_v_[i].trace(), y.rho[i], g.c, hh_[i], s_over_rho2_[i]);
+  });
+  for (std::size_t k = 0; k < ghosts_.size(); ++k) {
+    const Ghost& g = ghosts_[k];
+    const std::size_t s = static_cast<std::size_t>(g.source), i = n + k;
+    const MirroredPoint<double> image =
+        mirror_point(g.sign, g.shift, g.walls, let_go_[s], y.pos[s], y.vel[s], stress_[s], m_[s]);
+    v_[i] = image.v; stress_[i] = image.S;
+    pressure_[i] = pressure_[s]; sound_speed_[i] = sound_speed_[s];
+    set_stress_terms(params_, w, static_cast<std::int64_t>(i), y.rho[s]);
+    if (params_.bulk_on) s_over_rho2_[i] = mirror(s_over_rho2_[s], cast3<double>(g.sign));
+  }
+}
+
+void ReferenceSolver::resize_state(State& y, std::size_t n) {
+  y.pos.resize(n); y.vel.resize(n); y.rho.resize(n); y.energy.resize(n); y.dev_stress.resize(n);
+}
+
+void ReferenceSolver::resize_history(std::size_t n) {
+  history_.d_eps_p.resize(n);
+  history_.d_plastic_work.resize(n);
+  history_.d_temperature.resize(n);
+  history_.strain_rate.resize(n);
+}
+
+StepHistory<double> ReferenceSolver::step_history(std::int64_t i) const {
+  return {plastic_strain_[i], temperature_[i], bulking_[i], damage_[i]};
+}
+
+// History variables after the step: the non-local plastic work, then plastic strain, heating, damage and
+// bulking and the smoothing length (finish_point).
+void ReferenceSolver::finish_history(ParticleSet& p, double dt) {
+  const std::size_t n = p.size();
+  History& history = history_;
   // The non-local plastic work of the particles that may fail on it this step (common/nonlocal.hpp), from
   // every particle's plastic work after the step.
   nonlocal_work_.assign(n, 0.0);

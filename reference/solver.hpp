@@ -51,7 +51,7 @@ class ReferenceSolver final : public Stepper {
   };
   struct Rates {
     std::vector<Vec3d> vel, acc;
-    std::vector<double> drho, denergy;
+    std::vector<double> drho, drho_diffusion, denergy;  // drho_diffusion: the delta-SPH share of drho
     std::vector<Sym3d> dstress;
     std::vector<double> strain_rate;    // equivalent strain rate sqrt(2/3 d':d'), 1/s (Johnson-Cook, damage)
     std::vector<double> contact_power;  // power particle i's penalty pairs take from the motion, W
@@ -79,11 +79,25 @@ class ReferenceSolver final : public Stepper {
   template <class Kernel>
   void candidate_kernel(Kernel kernel, Vec3d x_i, double h_i, std::int64_t count, RowCandidates& c) const;
   void advance(const State& y0, const Rates& f, double dt, State& out, History* history) const;
+  void gather(const State& y);
+  void gradient_pass();
+  void rate_pass(Rates& f, double dt);
+  void restress(const State& y);
+  void midpoint_step(ParticleSet& p, double dt);
+  void leapfrog_step(ParticleSet& p, double dt);
+  void evaluate_carried_rates(ParticleSet& p, double dt);
+  void carry_rates(ParticleSet& p);
+  void finish_history(ParticleSet& p, double dt);
+  void resize_history(std::size_t n);
+  static void resize_state(State& y, std::size_t n);
+  Vec3d drift_velocity(const ParticleSet& p, std::int64_t i, double dt) const;
+  StepHistory<double> step_history(std::int64_t i) const;
   void check_state(const State& y, double dt) const;
   // The work arrays as the stages (common/stages.hpp) read them.
   StagePoints<double> points();
 
   NumericsSpec numerics_;
+  bool leapfrog_;                              // numerics.integrator: leapfrog (else the midpoint rule)
   StageParams<double> params_;                 // numerics and planes (common/stage_setup.hpp)
   std::vector<PairContact<double>> contacts_;  // how each pair of bodies interacts
   std::vector<BodySmoothing<double>> smoothing_;  // variable smoothing length per body

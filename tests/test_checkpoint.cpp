@@ -63,7 +63,12 @@ ParticleSet awkward_particles(std::size_t n) {
     p.body[i] = static_cast<std::int32_t>(i % 3);
     p.material[i] = static_cast<std::int32_t>(i % 2);
     p.fixed[i] = static_cast<std::uint8_t>(i % 5 == 0);
+    p.acceleration[i] = {1e9 * u(rng), u(rng) / 7, -u(rng)};
+    p.energy_rate[i] = 1e11 * u(rng);
+    p.density_diffusion[i] = 1e6 * u(rng);
+    p.contact_power[i] = u(rng) / 3;
   }
+  p.rates_current = true;
   return p;
 }
 
@@ -108,6 +113,11 @@ TEST_F(CheckpointTest, RoundTripIsBitExact) {
   EXPECT_TRUE(same_bits(d.particles.body, p.body));
   EXPECT_TRUE(same_bits(d.particles.material, p.material));
   EXPECT_TRUE(same_bits(d.particles.fixed, p.fixed));
+  EXPECT_TRUE(same_bits(d.particles.acceleration, p.acceleration));
+  EXPECT_TRUE(same_bits(d.particles.energy_rate, p.energy_rate));
+  EXPECT_TRUE(same_bits(d.particles.density_diffusion, p.density_diffusion));
+  EXPECT_TRUE(same_bits(d.particles.contact_power, p.contact_power));
+  EXPECT_TRUE(d.particles.rates_current);
   EXPECT_EQ(std::memcmp(&d.clock, &clock, sizeof clock), 0);
   EXPECT_EQ(d.fingerprint, fingerprint);
 

@@ -218,3 +218,42 @@ TEST(PlugDetection, AProjectileSlowingToAStopHasNotSettled) {
 
 }  // namespace
 }  // namespace impactsph
+
+namespace impactsph {
+namespace {
+
+// A held projectile: the verdict is known once the projectile has stopped or moves back (residual velocity
+// at most the tolerance) with no target particle failing for a whole window; a failure restarts the
+// window, and a projectile moving on clears it.
+TEST(PlugDetection, AHeldProjectileIsKnownAfterAWindowWithoutFailures) {
+  Scene s = plate_scene();
+  const ObservablesSpec& spec = s.spec.observables;  // window 30 us, tolerance 1 m/s
+  const double us = 1e-6;
+  CaseObservables o;
+  o.projectile = o.target = true;
+  RunClock c;
+  o.residual_velocity = 20.0;  // still pushing
+  track_held(spec, 100 * us, o, c);
+  EXPECT_LT(c.held_window_start, 0);
+  o.residual_velocity = 0.5;  // at rest
+  o.damage_fraction = 0.01;
+  track_held(spec, 110 * us, o, c);
+  EXPECT_DOUBLE_EQ(c.held_window_start, 110 * us);
+  o.residual_velocity = -5.0;  // moving back, and a particle fails: the window starts again there
+  o.damage_fraction = 0.012;
+  track_held(spec, 120 * us, o, c);
+  EXPECT_DOUBLE_EQ(c.held_window_start, 120 * us);
+  track_held(spec, 148 * us, o, c);
+  EXPECT_LT(c.held_time, 0);  // 28 us, the window is 30 us
+  EXPECT_LT(verdict_time(c), 0);
+  track_held(spec, 150 * us, o, c);
+  EXPECT_DOUBLE_EQ(c.held_time, 120 * us);
+  EXPECT_DOUBLE_EQ(verdict_time(c), 120 * us);
+  o.perforated = true;  // a perforation clears it
+  track_held(spec, 154 * us, o, c);
+  EXPECT_LT(c.held_time, 0);
+  EXPECT_LT(c.held_window_start, 0);
+}
+
+}  // namespace
+}  // namespace impactsph

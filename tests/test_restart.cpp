@@ -38,8 +38,9 @@ class InterruptingStepper final : public Stepper {
   long steps_ = 0;
 };
 
-Scene wave_scene() {
-  const std::vector<std::string> sets{"time.end=2us", "time.output_interval=0.25us", "time.frame_interval=1us"};
+Scene wave_scene(const std::string& integrator = "leapfrog") {
+  const std::vector<std::string> sets{"time.end=2us", "time.output_interval=0.25us", "time.frame_interval=1us",
+                                      "numerics.integrator=" + integrator};
   return build_scene(load_case_file(std::string(IMPACTSPH_CASES) + "/elastic-wave/case.toml", sets, "1 mm"));
 }
 
@@ -48,8 +49,14 @@ bool same_bits(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
-TEST(Restart, InterruptedRunContinuesBitForBit) {
-  const fs::path root = fs::temp_directory_path() / ("impactsph-restart-" + std::to_string(::getpid()));
+// Both integrators: the leapfrog carries the rates of its last evaluation in the checkpoint.
+class Restart : public ::testing::TestWithParam<const char*> {};
+INSTANTIATE_TEST_SUITE_P(Integrators, Restart, ::testing::Values("leapfrog", "midpoint"));
+
+TEST_P(Restart, InterruptedRunContinuesBitForBit) {
+  const auto wave_scene = [this] { return impactsph::wave_scene(GetParam()); };
+  const fs::path root =
+      fs::temp_directory_path() / ("impactsph-restart-" + std::string(GetParam()) + std::to_string(::getpid()));
   fs::remove_all(root);
   RunOptions opt;
   opt.quiet = true;
@@ -105,7 +112,7 @@ Scene nonlocal_plate_scene() {
 // The non-local average runs over the initial configuration, which a restarted solver takes from the scene
 // it was made from, before the checkpoint replaces the particles: a run stopped before the first failures
 // continues with the same bits, failures included.
-TEST(Restart, NonlocalDamageContinuesBitForBit) {
+TEST(RestartNonlocal, NonlocalDamageContinuesBitForBit) {
   const fs::path root = fs::temp_directory_path() / ("impactsph-restart-nonlocal-" + std::to_string(::getpid()));
   fs::remove_all(root);
   RunOptions opt;

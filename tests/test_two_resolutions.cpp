@@ -247,7 +247,18 @@ TEST(TwoResolutions, CaseKeysAndTheirErrors) {
   t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]\n", table + region);
   expect_error(t, "bodies[0].coarse.ratio", "missing in the coarse region of a body", -1);
   t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]\n", table + "ratio = 2\nspacing = \"1 mm\"\n" + region);
-  expect_error(t, "bodies[0].coarse.spacing", "valid keys: region, ratio, axis, axis_point, radius", -1);
+  expect_error(t, "bodies[0].coarse.spacing", "valid keys: region, ratio, max_spacing, axis, axis_point, radius", -1);
+  t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]\n", table + "ratio = 2\nmax_spacing = \"-1 mm\"\n" + region);
+  expect_error(t, "bodies[0].coarse.max_spacing", "must be greater than zero", line_of(t, "max_spacing"));
+  // max_spacing: the region is built at spacings up to it, and above it the body is at one resolution.
+  const std::string bounded = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]\n",
+                                   table + "ratio = 2\nmax_spacing = \"0.25 mm\"\n" + region);
+  const CaseSpec at = parse_case_string(bounded, "case.toml", {}, "0.25 mm");
+  EXPECT_EQ(at.bodies[0].coarse_ratio, 2);
+  EXPECT_EQ(at.bodies[0].coarse_off_above, 0.0);
+  const CaseSpec above = parse_case_string(bounded, "case.toml", {}, "0.5 mm");
+  EXPECT_EQ(above.bodies[0].coarse_ratio, 1);
+  EXPECT_DOUBLE_EQ(above.bodies[0].coarse_off_above, 0.25e-3);
   t = with("max = [\"10 mm\", \"10 mm\", \"2 mm\"]\n", "max = [\"10 mm\", \"10 mm\", \"2 mm\"]\nvariable_h = true\n\n[bodies.coarse]\nratio = 2\n" + region);
   expect_error(t, "bodies[0].variable_h", "two initial smoothing lengths", -1);
 }
