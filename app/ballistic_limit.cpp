@@ -263,10 +263,12 @@ std::vector<Run> run_batch(Search& s, const std::vector<double>& vs) {
 
 }  // namespace
 
-int ballistic_limit_command(const BallisticOptions& opt) {
-  Search s;
+namespace ballistic {
+namespace {
+
+// The checks of every input, before the first run (a search may take hours), and the search they set up.
+void prepare(const BallisticOptions& opt, Search& s) {
   s.opt = opt;
-  // Check everything before the first run: a search may take hours.
   s.v_from = round_speed(parse_speed("--from", opt.from));
   s.v_to = round_speed(parse_speed("--to", opt.to));
   s.tolerance = parse_speed("--tolerance", opt.tolerance);
@@ -276,6 +278,12 @@ int ballistic_limit_command(const BallisticOptions& opt) {
                              " m/s): give a speed that does not perforate and one that does");
   if (!(s.tolerance >= 0.05))
     throw std::runtime_error("--tolerance " + opt.tolerance + ": must be at least 0.05 m/s (runs are set to 0.01 m/s)");
+  if (opt.split != "thirds" && opt.split != "recht-ipson")
+    throw std::runtime_error("--split " + opt.split + ": expected thirds (even splits) or recht-ipson (splits placed "
+                             "at the limit the perforating runs' Recht-Ipson curve points to)");
+  if (!(opt.coarse_margin >= 0 && opt.coarse_margin < 0.5))
+    throw std::runtime_error("--coarse-margin " + std::to_string(opt.coarse_margin) +
+                             ": expected a share of the coarse limit from 0 to 0.5, such as 0.05");
   s.spec = load_case_file(opt.case_file, opt.sets, opt.spacing);
   const ObservablesSpec& os = s.spec.observables;
   if (os.projectile_index < 0 || os.target_index < 0)
@@ -289,125 +297,191 @@ int ballistic_limit_command(const BallisticOptions& opt) {
       throw std::runtime_error("--set " + set + ": ballistic-limit sets the impact speed of '" + s.projectile +
                                "' itself (--from, --to); leave it out");
   }
-  if (opt.backend != "reference" && opt.backend != "gpu")
-    throw std::runtime_error("--backend " + opt.backend + ": expected reference or gpu");
-  if (opt.precision != "double" && opt.precision != "float")
-    throw std::runtime_error("--precision " + opt.precision + ": expected double or float");
-  if (opt.backend == "reference" && opt.precision != "double")
-    throw std::runtime_error("--precision " + opt.precision + ": the reference solver runs in double only (use --backend gpu)");
-  const Reference reference = read_reference(fs::path(opt.case_file).parent_path() / "reference.csv");
+  check_solver_choice(opt.backend, opt.precision);
+  if (!opt.coarse_spacing.empty()) {
+    double coarse = 0;
+    try {
+      coarse = parse_quantity(opt.coarse_spacing, Dimension::Length);
+    } catch (const std::exception& e) {
+      throw std::runtime_error("--coarse " + opt.coarse_spacing + ": " + e.what());
+    }
+    if (!(coarse > s.spec.numerics.spacing))
+      throw std::runtime_error("--coarse " + opt.coarse_spacing + ": the coarse search's spacing must be larger than "
+                               "the search's own (" + format_quantity(s.spec.numerics.spacing, Dimension::Length) +
+                               "), such as twice it");
+    load_case_file(opt.case_file, opt.sets, opt.coarse_spacing);  // its scene's inputs are checked now too
+  }
   s.out = opt.out.empty() ? fs::path("runs") / (s.spec.name + "-ballistic") : fs::path(opt.out);
   fs::create_directories(s.out);
   s.cores = std::max(1, omp_get_num_procs());
   s.jobs = opt.jobs > 0 ? opt.jobs : s.cores;
+}
 
-  Outcome o;
-  if (!reference.points.empty()) o.reference = &reference;
-  if (!opt.quiet) {
-    const double rounds = std::ceil(std::log(std::max(1.0, (s.v_to - s.v_from) / s.tolerance)) / std::log(s.jobs + 1.0));
-    std::printf("ballistic-limit: %s at spacing %s, %s to %s m/s until the bracket is %s m/s wide\n",
-                s.spec.name.c_str(), format_quantity(s.spec.numerics.spacing, Dimension::Length).c_str(),
-                speed_text(s.v_from).c_str(), speed_text(s.v_to).c_str(), speed_text(s.tolerance).c_str());
-    const std::string solver = opt.backend == "reference"
-                                   ? "reference (double)"
-                                   : "gpu port (" + opt.precision + "; the CUDA build on a device, else the host build)";
-    std::printf("  solver: %s\n", solver.c_str());
-    std::printf("  %d run%s at a time, %d thread%s each; the 2 ends, then about %.0f round%s of %d; results in %s\n",
-                s.jobs, s.jobs > 1 ? "s" : "", std::max(1, s.cores / s.jobs), s.cores / s.jobs > 1 ? "s" : "", rounds,
-                rounds == 1 ? "" : "s", s.jobs, s.out.string().c_str());
-    std::printf("  %9s      %-10s  %13s  %9s\n", "v_impact", "perforated", "v_residual", "wall");
-    std::fflush(stdout);
-  }
+void print_banner(const Search& s) {
+  if (s.opt.quiet) return;
+  const double rounds = std::ceil(std::log(std::max(1.0, (s.v_to - s.v_from) / s.tolerance)) / std::log(s.jobs + 1.0));
+  std::printf("ballistic-limit: %s at spacing %s, %s to %s m/s until the bracket is %s m/s wide\n",
+              s.spec.name.c_str(), format_quantity(s.spec.numerics.spacing, Dimension::Length).c_str(),
+              speed_text(s.v_from).c_str(), speed_text(s.v_to).c_str(), speed_text(s.tolerance).c_str());
+  const std::string solver = s.opt.backend == "reference"
+                                 ? "reference (double)"
+                                 : "gpu port (" + s.opt.precision + "; the CUDA build on a device, else the host build)";
+  std::printf("  solver: %s; splits: %s\n", solver.c_str(),
+              s.opt.split == "thirds" ? "even" : "at the Recht-Ipson limit of the perforating runs, where they have one");
+  std::printf("  %d run%s at a time, %d thread%s each; the 2 ends, then at most about %.0f round%s of %d; results in "
+              "%s\n",
+              s.jobs, s.jobs > 1 ? "s" : "", std::max(1, s.cores / s.jobs), s.cores / s.jobs > 1 ? "s" : "", rounds,
+              rounds == 1 ? "" : "s", s.jobs, s.out.string().c_str());
+  std::printf("  %9s      %-10s  %13s  %9s\n", "v_impact", "perforated", "v_residual", "wall");
+  std::fflush(stdout);
+}
 
-  g_signals.store(0);
-  g_abort_runs.store(false);
-  const ScopedSignals signals(on_search_stop);
-  auto add = [&](std::vector<Run> batch) {
-    for (Run& r : batch) s.runs.push_back(std::move(r));
-  };
-  // A failed run ends the search: its speed would leave a hole in the bracket.
-  auto report_failures = [&]() {
-    bool any = false, diverged = false;
-    for (const Run& r : s.runs)
-      if (r.failed) {
-        any = true;
-        diverged |= r.diverged;
-        std::fprintf(stderr, "error: the run at %s m/s %s: %s\n  its output is in %s\n", speed_text(r.v).c_str(),
-                     r.diverged ? "diverged" : "failed", r.error.c_str(), r.dir.string().c_str());
-      }
-    if (any && diverged)
-      std::fprintf(stderr, "Try a smaller numerics.cfl (--set numerics.cfl=0.1) or another --spacing.\n");
-    return any;
-  };
-  auto finish_failed = [&](const char* status, int exit_status) {
-    o.status = status;
-    write_results(s, o);
-    return exit_status;
-  };
-
-  // The two ends must straddle the limit.
-  add(run_batch(s, {s.v_from, s.v_to}));
-  if (report_failures()) return finish_failed("failed", 3);
-  if (s.runs.size() < 2 || !s.runs[0].done || !s.runs[1].done) {
-    o.status = "interrupted";
-    write_results(s, o);
-    std::printf("interrupted before both ends had run; results so far in %s\n", s.out.string().c_str());
-    return 130;
-  }
-  const Run& low = s.runs[0];
-  const Run& high = s.runs[1];
-  const double end_us = s.spec.time.end * 1e6;
-  if (low.obs.perforated || !high.obs.perforated) {
-    // A run that had not settled by time.end may still change its verdict (near the limit a projectile
-    // can be slowing to a stop in the hole at time.end): continuing it keeps every other run of the search.
-    auto continue_hint = [&](const Run& r) {
-      if (r.obs.settled_time >= 0) return std::string();
-      char buf[640];
-      std::snprintf(buf, sizeof buf,
-                    " It had not settled by time.end = %.4g us, so its verdict may still change: continue it with "
-                    "`impactsph run --restart %s --end %.4gus` and run this command again (it takes the longer run "
-                    "from its folder).",
-                    end_us, report_path(r.dir).c_str(), 1.5 * end_us);
-      return std::string(buf);
-    };
-    if (low.obs.perforated)
-      std::fprintf(stderr,
-                   "error: the low end is wrong: --from %s m/s already perforates '%s' (projectile residual velocity "
-                   "%.1f m/s, plug %.1f m/s), so the ballistic limit is below it. Try a lower --from, e.g. --from "
-                   "%s.%s\n",
-                   speed_text(low.v).c_str(), os.target.c_str(), low.obs.residual_velocity, low.obs.plug_velocity,
-                   speed_text(0.5 * low.v).c_str(), continue_hint(low).c_str());
-    if (!high.obs.perforated)
-      std::fprintf(stderr,
-                   "error: the high end is wrong: --to %s m/s does not perforate '%s' by time.end = %.4g us "
-                   "(projectile residual velocity %.1f m/s), so the limit is above it, or the plug had not left "
-                   "yet. Try a higher --to, e.g. --to %s.%s\n",
-                   speed_text(high.v).c_str(), os.target.c_str(), end_us, high.obs.residual_velocity,
-                   speed_text(2 * high.v).c_str(), continue_hint(high).c_str());
-    std::fprintf(stderr, "Both runs are in %s.\n", s.out.string().c_str());
-    return finish_failed("bad-bracket", 4);
-  }
-  o.bracketed = true;
-  o.lo = low.v;
-  o.hi = high.v;
-  write_results(s, o);
-
-  // Split [lo, hi] into jobs + 1 parts, run the interior points at once, keep the part where the
-  // verdict changes. Non-monotonic verdicts (a higher speed that stops) follow the lowest perforation.
-  std::vector<std::string> inversions;
-  while (o.hi - o.lo > s.tolerance && !stop_requested()) {
-    std::vector<double> points;
-    for (int k = 1; k <= s.jobs; ++k) {
-      const double v = round_speed(o.lo + (o.hi - o.lo) * k / (s.jobs + 1));
-      if (v > o.lo && v < o.hi && (points.empty() || v > points.back())) points.push_back(v);
+// A failed run ends the search: its speed would leave a hole in the bracket. Prints each and returns
+// whether there was one.
+bool report_failures(const Search& s) {
+  bool any = false, diverged = false;
+  for (const Run& r : s.runs)
+    if (r.failed) {
+      any = true;
+      diverged |= r.diverged;
+      std::fprintf(stderr, "error: the run at %s m/s %s: %s\n  its output is in %s\n", speed_text(r.v).c_str(),
+                   r.diverged ? "diverged" : "failed", r.error.c_str(), r.dir.string().c_str());
     }
+  if (any && diverged) std::fprintf(stderr, "Try a smaller numerics.cfl (--set numerics.cfl=0.1) or another --spacing.\n");
+  return any;
+}
+
+void add_runs(Search& s, std::vector<Run> batch) {
+  for (Run& r : batch) s.runs.push_back(std::move(r));
+}
+
+// Says which end of a bracket is wrong and what to try (the user's --from and --to).
+void explain_bad_bracket(const Search& s, const Run& low, const Run& high) {
+  const ObservablesSpec& os = s.spec.observables;
+  const double end_us = s.spec.time.end * 1e6;
+  // A run that had not settled by time.end may still change its verdict (near the limit a projectile
+  // can be slowing to a stop in the hole at time.end): continuing it keeps every other run of the search.
+  auto continue_hint = [&](const Run& r) {
+    if (r.obs.settled_time >= 0) return std::string();
+    char buf[640];
+    std::snprintf(buf, sizeof buf,
+                  " It had not settled by time.end = %.4g us, so its verdict may still change: continue it with "
+                  "`impactsph run --restart %s --end %.4gus` and run this command again (it takes the longer run "
+                  "from its folder).",
+                  end_us, report_path(r.dir).c_str(), 1.5 * end_us);
+    return std::string(buf);
+  };
+  if (low.obs.perforated)
+    std::fprintf(stderr,
+                 "error: the low end is wrong: --from %s m/s already perforates '%s' (projectile residual velocity "
+                 "%.1f m/s, plug %.1f m/s), so the ballistic limit is below it. Try a lower --from, e.g. --from "
+                 "%s.%s\n",
+                 speed_text(low.v).c_str(), os.target.c_str(), low.obs.residual_velocity, low.obs.plug_velocity,
+                 speed_text(0.5 * low.v).c_str(), continue_hint(low).c_str());
+  if (!high.obs.perforated)
+    std::fprintf(stderr,
+                 "error: the high end is wrong: --to %s m/s does not perforate '%s' by time.end = %.4g us "
+                 "(projectile residual velocity %.1f m/s), so the limit is above it, or the plug had not left "
+                 "yet. Try a higher --to, e.g. --to %s.%s\n",
+                 speed_text(high.v).c_str(), os.target.c_str(), end_us, high.obs.residual_velocity,
+                 speed_text(2 * high.v).c_str(), continue_hint(high).c_str());
+  std::fprintf(stderr, "Both runs are in %s.\n", s.out.string().c_str());
+}
+
+// How an attempt to bracket the limit ended.
+enum class Bracketing { Done, Interrupted, Failed, Bad };
+
+// Runs the ends lo and hi together and checks that they straddle the limit. With `widen` (ends taken from a
+// coarser search rather than given by the user), an end on the wrong side becomes the other end and a new
+// end is tried as far again beyond it, within the user's --from and --to, until the two straddle the limit.
+Bracketing bracket(Search& s, Outcome& o, double lo, double hi, bool widen) {
+  std::vector<double> todo{lo, hi};
+  for (;;) {
+    const std::size_t first = s.runs.size();
+    add_runs(s, run_batch(s, todo));
+    if (report_failures(s)) return Bracketing::Failed;
+    if (s.runs.size() < first + todo.size() || stop_requested()) return Bracketing::Interrupted;
+    const Run* low = nullptr;
+    const Run* high = nullptr;
+    for (std::size_t k = first; k < s.runs.size(); ++k) {
+      if (!s.runs[k].done) return Bracketing::Interrupted;
+      if (s.runs[k].v == lo) low = &s.runs[k];
+      if (s.runs[k].v == hi) high = &s.runs[k];
+    }
+    const bool low_ok = !low || !low->obs.perforated, high_ok = !high || high->obs.perforated;
+    if (low && high && (!low_ok || !high_ok) && !widen) {
+      explain_bad_bracket(s, *low, *high);
+      return Bracketing::Bad;
+    }
+    if (!low_ok) {  // the limit is below lo: lo is an upper end
+      hi = lo;
+      lo = std::max(s.v_from, round_speed(lo - (high ? high->v - lo : lo * 0.1)));
+      if (lo >= hi) return Bracketing::Bad;
+      todo = {lo};
+    } else if (!high_ok) {
+      lo = hi;
+      hi = std::min(s.v_to, round_speed(hi + (low ? hi - low->v : hi * 0.1)));
+      if (hi <= lo) return Bracketing::Bad;
+      todo = {hi};
+    } else {
+      o.bracketed = true;
+      o.lo = lo;
+      o.hi = hi;
+      return Bracketing::Done;
+    }
+    if (!s.opt.quiet) std::printf("  the limit is outside the coarse bracket: trying %s m/s\n", speed_text(todo[0]).c_str());
+  }
+}
+
+// The limit the perforating runs' Recht-Ipson curve points to (p = 2, a and v_bl fitted), when at least two
+// of them have a residual velocity; -1 otherwise.
+double recht_ipson_estimate(const Search& s, const Outcome& o) {
+  std::vector<double> vi, vr;
+  for (const Run* r : sorted_done(s))
+    if (r->obs.perforated && r->obs.residual_velocity > 0) {
+      vi.push_back(r->v);
+      vr.push_back(r->obs.residual_velocity);
+    }
+  if (vi.size() < 2) return -1;
+  const RechtIpsonFit f = fit_recht_ipson(vi, vr, {1.0, 2.0, o.limit()}, true, false, true);
+  return f.ok ? f.curve.v_bl : -1;
+}
+
+// The speeds of the next round within (lo, hi): s.jobs of them, evenly, or (--split recht-ipson, where the
+// perforating runs point to a limit inside the bracket) spread over 0.9 tolerance about that limit, so that
+// the round closes the bracket where the estimate holds.
+std::vector<double> split_points(const Search& s, const Outcome& o) {
+  std::vector<double> points;
+  auto add = [&](double v) {
+    v = round_speed(v);
+    if (v > o.lo && v < o.hi && (points.empty() || v > points.back())) points.push_back(v);
+  };
+  const double estimate = s.opt.split == "recht-ipson" ? recht_ipson_estimate(s, o) : -1;
+  const double width = 0.9 * s.tolerance;
+  if (estimate - 0.5 * width > o.lo && estimate + 0.5 * width < o.hi && o.hi - o.lo > 2 * s.tolerance) {
+    if (!s.opt.quiet) std::printf("  recht-ipson: the perforating runs point to %.1f m/s\n", estimate);
+    if (s.jobs == 1) add(estimate);
+    for (int k = 0; k < s.jobs && s.jobs > 1; ++k) add(estimate - 0.5 * width + width * k / (s.jobs - 1));
+    if (static_cast<int>(points.size()) == s.jobs) return points;
+    points.clear();
+  }
+  for (int k = 1; k <= s.jobs; ++k) add(o.lo + (o.hi - o.lo) * k / (s.jobs + 1));
+  return points;
+}
+
+// Splits [lo, hi] round by round (split_points), keeping the part where the verdict changes, until it is
+// within the tolerance. Non-monotonic verdicts (a higher speed that stops) follow the lowest perforation and
+// are listed in `inversions`. Returns false when a run failed.
+bool narrow(Search& s, Outcome& o, std::vector<std::string>& inversions) {
+  while (o.hi - o.lo > s.tolerance && !stop_requested()) {
+    const std::vector<double> points = split_points(s, o);
     if (points.empty()) break;
     std::vector<Run> batch = run_batch(s, points);
     std::vector<std::pair<double, bool>> verdicts{{o.lo, false}, {o.hi, true}};
     for (const Run& r : batch)
       if (r.done) verdicts.emplace_back(r.v, r.obs.perforated);
-    add(std::move(batch));
-    if (report_failures()) return finish_failed("failed", 3);
+    add_runs(s, std::move(batch));
+    if (report_failures(s)) return false;
     std::sort(verdicts.begin(), verdicts.end());
     std::size_t first = 0;
     while (!verdicts[first].second) ++first;
@@ -419,7 +493,74 @@ int ballistic_limit_command(const BallisticOptions& opt) {
     o.hi = verdicts[first].first;
     write_results(s, o);
   }
+  return true;
+}
+
+// The coarse search (--coarse): the same search at the coarse spacing into DIR/coarse-<spacing>, quietly
+// but for its result. Returns its exit status and its bracket in lo, hi.
+int coarse_search(const Search& s, double& lo, double& hi) {
+  BallisticOptions c = s.opt;
+  c.spacing = s.opt.coarse_spacing;
+  c.coarse_spacing.clear();
+  c.out = (s.out / ("coarse-" + s.opt.coarse_spacing)).string();
+  if (!s.opt.quiet) std::printf("  first the same search at %s:\n", s.opt.coarse_spacing.c_str());
+  const int status = ballistic_limit_command(c);
+  const nlohmann::json j = read_json_or_null(fs::path(c.out) / "ballistic.json");
+  if (status != 0 || !j.is_object() || !j.contains("bracket_m_s") || !j.at("bracket_m_s").is_array())
+    return status != 0 ? status : 3;
+  lo = j.at("bracket_m_s").at(0).get<double>();
+  hi = j.at("bracket_m_s").at(1).get<double>();
+  return 0;
+}
+
+}  // namespace
+}  // namespace ballistic
+
+
+int ballistic_limit_command(const BallisticOptions& opt) {
+  Search s;
+  prepare(opt, s);
+  const Reference reference = read_reference(fs::path(opt.case_file).parent_path() / "reference.csv");
+  Outcome o;
+  if (!reference.points.empty()) o.reference = &reference;
+
+  // The first bracket: the user's ends, or the coarse search's widened by the margin on each side.
+  double lo = s.v_from, hi = s.v_to;
+  const bool from_coarse = !opt.coarse_spacing.empty();
+  if (from_coarse) {
+    if (const int status = coarse_search(s, lo, hi); status != 0) return status;
+    const double margin = opt.coarse_margin * 0.5 * (lo + hi);
+    lo = std::max(s.v_from, round_speed(lo - margin));
+    hi = std::min(s.v_to, round_speed(hi + margin));
+    if (!opt.quiet)
+      std::printf("  the coarse search bracketed the limit; here from %s to %s m/s (its bracket and %.0f %% of its "
+                  "limit on each side)\n",
+                  speed_text(lo).c_str(), speed_text(hi).c_str(), 100 * opt.coarse_margin);
+  }
+  print_banner(s);
+  g_signals.store(0);
+  g_abort_runs.store(false);
+  const ScopedSignals signals(on_search_stop);
+  auto finish = [&](const char* status, int exit_status) {
+    o.status = status;
+    write_results(s, o);
+    return exit_status;
+  };
+  switch (bracket(s, o, lo, hi, from_coarse)) {
+    case Bracketing::Failed: return finish("failed", 3);
+    case Bracketing::Bad: return finish("bad-bracket", 4);
+    case Bracketing::Interrupted:
+      std::printf("interrupted before the limit was bracketed; results so far in %s\n", s.out.string().c_str());
+      return finish("interrupted", 130);
+    case Bracketing::Done: break;
+  }
+  write_results(s, o);
+  std::vector<std::string> inversions;
+  if (!narrow(s, o, inversions)) return finish("failed", 3);
   const bool interrupted = stop_requested() && o.hi - o.lo > s.tolerance;
+  const double end_us = s.spec.time.end * 1e6;
+  const ObservablesSpec& os = s.spec.observables;
+  (void)os;
 
   // Fits to the perforating runs.
   std::vector<double> vi, vr;

@@ -20,6 +20,9 @@ struct BallisticOptions {
   std::string backend = "reference";  // --backend: reference or gpu (the port; its host build without a GPU)
   std::string precision = "double";   // --precision: double, or float (gpu only)
   bool quiet = false;              // no banner and no line per run
+  std::string coarse_spacing;      // --coarse: first the same search at this spacing; empty: none
+  double coarse_margin = 0.05;     // --coarse-margin: the share of the coarse limit added on each side of its bracket
+  std::string split = "thirds";    // --split: thirds (even) or recht-ipson (at the limit the perforating runs point to)
   std::vector<std::string> command_line;  // recorded in ballistic.json
 };
 

@@ -107,13 +107,21 @@ void print_scene(const Scene& scene, double dt) {
                   b.coarse_lattice_spacing.x * 1e3, b.coarse_lattice_spacing.y * 1e3, b.coarse_lattice_spacing.z * 1e3,
                   b.coarse_particle_count, b.particle_count);
   }
+  for (const BodySpec& b : s.bodies)
+    if (b.coarse_off_above > 0)
+      std::printf("%-16s %-10s none: the case builds its coarse region at spacings up to %.6g mm only "
+                  "([bodies.coarse] max_spacing)\n",
+                  b.name.c_str(), "coarse", b.coarse_off_above * 1e3);
   print_geometry_warnings(scene, stdout);
   for (const SymmetryPlaneSpec& p : s.symmetry)
     std::printf("%s plane %c = %.6g mm\n", p.wall ? "wall     " : "symmetry ", "xyz"[p.axis], p.position * 1e3);
   const double steps = dt > 0 ? s.time.end / dt : 0;
   std::printf("\ntime      end %.6g us, output every %.6g us\n", s.time.end * 1e6, s.time.output_interval * 1e6);
-  std::printf("step      estimated dt %.4g ns (CFL %.3g), about %.0f steps, %.3g particle-steps\n", dt * 1e9,
-              s.numerics.cfl, steps, steps * static_cast<double>(scene.particles.size()));
+  const bool leapfrog = s.numerics.integrator == Integrator::Leapfrog;
+  std::printf("step      estimated dt %.4g ns (CFL %.3g, %s), about %.0f steps, %.3g particle-steps, %.3g force "
+              "evaluations\n",
+              dt * 1e9, s.numerics.cfl, leapfrog ? "leapfrog" : "midpoint rule", steps,
+              steps * static_cast<double>(scene.particles.size()), leapfrog ? steps + 1 : 2 * steps);
 }
 
 Scene load_scene(const CaseArgs& a) {
@@ -234,7 +242,10 @@ int run_command(CaseArgs args, std::string out, int threads, bool quiet, const s
                 "(viscous heat, stored elastic)\n", 100 * plastic / k0, 100 * other / k0);
   }
   const CaseObservables& o = r.observables;
-  if (r.settled) std::printf("  stopped early: the residual velocity was steady\n");
+  if (r.settled)
+    std::printf(r.held ? "  stopped early: the target held the projectile (stopped or moving back, no target particle "
+                         "failing, for a settle window)\n"
+                       : "  stopped early: the residual velocity was steady\n");
   for (const ObservableRow& row : observable_rows(o)) std::printf("%s\n", format_observable(row).c_str());
   bool picture = false;
   if (scene.spec.output.picture) {
@@ -318,6 +329,14 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"reference", "gpu"}));
   ballistic->add_option("--precision", ballistic_opt.precision, "double (default) or float (gpu backend only)")
       ->check(CLI::IsMember({"double", "float"}));
+  ballistic->add_option("--coarse", ballistic_opt.coarse_spacing,
+                        "first the same search at this coarser spacing (\"2 mm\"), then this one from its bracket");
+  ballistic->add_option("--coarse-margin", ballistic_opt.coarse_margin,
+                        "share of the coarse limit added on each side of the coarse bracket")
+      ->capture_default_str();
+  ballistic->add_option("--split", ballistic_opt.split,
+                        "thirds (even splits) or recht-ipson (splits at the limit the perforating runs point to)")
+      ->capture_default_str();
   add_case_options(ballistic, ballistic_args);
 
   SweepOptions sweep_opt;

@@ -7,16 +7,19 @@
 
 namespace impactsph {
 
-std::unique_ptr<Stepper> make_stepper(const Scene& scene, const std::string& backend, const std::string& precision,
-                                      std::string* note) {
+void check_solver_choice(const std::string& backend, const std::string& precision) {
+  if (backend != "reference" && backend != "gpu")
+    throw std::runtime_error("--backend " + backend + ": expected reference or gpu");
   if (precision != "double" && precision != "float")
     throw std::runtime_error("--precision " + precision + ": expected double or float");
-  if (backend == "reference") {
-    if (precision != "double")
-      throw std::runtime_error("--precision " + precision + ": the reference solver runs in double only (use --backend gpu)");
-    return std::make_unique<reference::ReferenceSolver>(scene);
-  }
-  if (backend != "gpu") throw std::runtime_error("--backend " + backend + ": expected reference or gpu");
+  if (backend == "reference" && precision != "double")
+    throw std::runtime_error("--precision " + precision + ": the reference solver runs in double only (use --backend gpu)");
+}
+
+std::unique_ptr<Stepper> make_stepper(const Scene& scene, const std::string& backend, const std::string& precision,
+                                      std::string* note) {
+  check_solver_choice(backend, precision);
+  if (backend == "reference") return std::make_unique<reference::ReferenceSolver>(scene);
   std::string which;
   std::unique_ptr<gpu::GpuStepper> s =
       gpu::make_solver(scene, precision == "float" ? gpu::Precision::Float : gpu::Precision::Double, &which);

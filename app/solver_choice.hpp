@@ -9,6 +9,9 @@
 
 namespace impactsph {
 
+// Throws std::runtime_error for a backend or precision that does not exist, or a float reference.
+void check_solver_choice(const std::string& backend, const std::string& precision);
+
 // The reference (double only) or the gpu port (its CUDA build when a device is present, else its host
 // build; `note` receives the line that says which, when not null). Throws std::runtime_error for a
 // backend or precision that does not exist or a float reference.
