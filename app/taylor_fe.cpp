@@ -104,6 +104,9 @@ std::string picture_data(const fe2d::Simulation& s) {
   return d.str();
 }
 
+// The mesh's lines are drawn up to this many elements across the radius; finer, they would hide the colours.
+constexpr int kMeshLinesUpTo = 32;
+
 std::string picture_script(const fe2d::Simulation& s, const fs::path& png) {
   double r_max = 0, z_max = 0, eps_max = 0;
   for (const fe2d::Node& n : s.nodes()) r_max = std::max(r_max, n.r), z_max = std::max(z_max, n.z);
@@ -130,7 +133,7 @@ std::string picture_script(const fe2d::Simulation& s, const fs::path& png) {
     << "set cbrange [0:" << gp_number(eps_max > 0 ? eps_max : 1.0) << "]\n"
     << "set cblabel 'plastic strain [-]'\n"
     << "set palette defined (0 '#f0f0f0', 0.2 '#fde08a', 0.45 '#f99b3e', 0.7 '#d9480f', 1 '#6b0f1a')\n"
-    << "set pm3d border lc rgb '#606060' lw 0.4\n"
+    << (s.nr() <= kMeshLinesUpTo ? "set pm3d border lc rgb '#606060' lw 0.4\n" : "")
     << "splot 'picture.dat' using 1:2:3 with polygons fillcolor palette z\n"
     << "unset output\n";
   return g.str();
