@@ -6,6 +6,7 @@
 //   impactsph ballistic-limit CASE.toml --from V1 --to V2 [--tolerance DV] [--jobs N] [--out DIR] ...
 //   impactsph sweep SWEEP.toml [--jobs N] [--threads-per-run T] [--out DIR] [--emit slurm] [--collect]
 //   impactsph verify [--suite fast|full] [--out DIR] [--threads N]
+//   impactsph taylor-fe CASE.toml [--elements-across N] [--out DIR] [--end T] [--set key=value ...]
 #include <omp.h>
 #include <unistd.h>
 
@@ -21,6 +22,7 @@
 #include "app/solver_choice.hpp"
 #include "app/run_args.hpp"
 #include "app/sweep.hpp"
+#include "app/taylor_fe.hpp"
 #include "app/verify.hpp"
 #include "common/case_file.hpp"
 #include "common/checkpoint.hpp"
@@ -278,7 +280,8 @@ int main(int argc, char** argv) {
       "  impactsph run --restart runs/elastic-wave         continue a stopped run from its checkpoint\n"
       "  impactsph ballistic-limit cases/plate-8mm/case.toml --from 100 --to 300   find the ballistic limit\n"
       "  impactsph sweep cases/sweeps/hugoniot-spacing.toml   run a case over a set of parameters\n"
-      "  impactsph verify --suite fast                         convergence report against closed forms\n\n"
+      "  impactsph verify --suite fast                         convergence report against closed forms\n"
+      "  impactsph taylor-fe cases/taylor-bar/case.toml        the Taylor bar by axisymmetric finite elements\n\n"
       "Values take units: --spacing 0.5mm, --set projectile.velocity=\"298 m/s\". Case files: docs/case-files.md"};
   app.require_subcommand(1);
 
@@ -369,6 +372,30 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   verify->add_option("--cases", verify_opt.cases, "folder of the case folders (default: the source tree's cases/)");
 
+  TaylorFeOptions fe_opt;
+  CLI::App* taylor_fe = app.add_subcommand(
+      "taylor-fe", "a Taylor bar (one cylinder on a wall) by axisymmetric finite elements with the case's material "
+                   "models: summary.json, profile.csv, history.csv, picture.png (verification/fe2d/README.md)");
+  taylor_fe->add_option("case", fe_opt.case_file, "case file (TOML) of one cylinder and a wall or symmetry plane at its end")
+      ->required()
+      ->check(CLI::ExistingFile);
+  taylor_fe->add_option("--elements-across", fe_opt.numerics.elements_across, "elements across the radius")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
+  taylor_fe->add_option("--out", fe_opt.out, "output folder (default runs/<case name>-fe)");
+  taylor_fe->add_option("--end", fe_opt.end, "end time with its unit (default the case's time.end), e.g. 40us");
+  taylor_fe->add_option("--cfl", fe_opt.numerics.cfl, "the step as a fraction of the least element's stable step")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 1.0));
+  taylor_fe->add_option("--hourglass", fe_opt.numerics.hourglass_stiffness,
+                        "stiffness coefficient kappa of the Flanagan-Belytschko hourglass control")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  taylor_fe->add_option("--set", fe_opt.sets, "override a case value: KEY=VALUE, e.g. bar.velocity=\"200 m/s\" "
+                                              "(repeatable)")
+      ->take_all();
+  taylor_fe->add_flag("--quiet,-q", fe_opt.quiet, "no banner");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -380,6 +407,10 @@ int main(int argc, char** argv) {
     if (*verify) {
       verify_opt.command_line = argv_all;
       return verify_command(verify_opt);
+    }
+    if (*taylor_fe) {
+      fe_opt.command_line = argv_all;
+      return taylor_fe_command(fe_opt);
     }
     if (*ballistic) {
       ballistic_opt.case_file = ballistic_args.case_file;

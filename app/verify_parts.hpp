@@ -5,6 +5,7 @@
 // verify_speed.cpp: the plots and the speed-against-error study.
 #pragma once
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -57,7 +58,19 @@ struct SideBySide {
   std::vector<Side> ports;
 };
 
+// The finite-element answer of a validation case (verification/fe2d, `impactsph taylor-fe`): the reference
+// line of the Taylor-bar section beside the experiment.
+struct FiniteElementAnswer {
+  bool ran = false;
+  int elements_across = 0;
+  std::size_t elements = 0;
+  long steps = 0;
+  double final_length = 0, impact_face_diameter = 0;  // m
+  double wall_s = 0;
+};
+
 struct Report {
+  FiniteElementAnswer taylor_fe;   // the Taylor bar by finite elements
   std::vector<SideBySide> cross;   // CPU against GPU port
   std::vector<Point> errors;       // against closed forms: convergence
   std::vector<Point> observables;  // validation: against experiment
@@ -182,6 +195,8 @@ void write_results_csv(const Report& r, const fs::path& file);
 void write_crosscheck_csv(const Report& r, const fs::path& file);
 std::string speed_section(const Report& r, const std::vector<Study>& charted, int threads);
 std::string crosscheck_section(const Report& r);
+std::string taylor_fe_sentence(const FiniteElementAnswer& fe);
+double finite_element_value(const FiniteElementAnswer& fe, const std::string& series);
 
 // verify_studies.cpp
 double seconds_since(std::chrono::steady_clock::time_point t0);
@@ -224,8 +239,14 @@ std::string answer(const Report& r, const Study& st, const Question& q, int thre
 std::string log_tics(double lo, double hi);
 std::string study_script(const Report& r, const Study& st, const fs::path& png, int threads);
 std::string study_table(const Report& r, const Study& st, const Question& q);
+// A series of a validation plot: its points' name and the values (SI) drawn as reference lines, the
+// experiment's and, where a second method gives one, the finite elements' (NaN: none).
+struct PlotSeries {
+  std::string name;
+  double experiment = 0;
+  double finite_element = std::nan("");
+};
 std::string observable_script(const Report& r, const fs::path& png, const std::string& title,
-                              const std::vector<std::pair<std::string, double>>& series, double scale,
-                              const std::string& ylabel);
+                              const std::vector<PlotSeries>& series, double scale, const std::string& ylabel);
 
 }  // namespace impactsph::verify_detail

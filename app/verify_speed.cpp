@@ -361,15 +361,17 @@ std::string study_table(const Report& r, const Study& st, const Question& q) {
   return md.str();
 }
 
-// Observables against spacing, in mm or m/s, with the experiment as a horizontal line.
+// Observables against spacing, in mm or m/s, with the experiment as a dashed horizontal line and, where a
+// series has one, the finite-element answer as a solid one.
 std::string observable_script(const Report& r, const fs::path& png, const std::string& title,
-                              const std::vector<std::pair<std::string, double>>& series, double scale,
-                              const std::string& ylabel) {
+                              const std::vector<PlotSeries>& series, double scale, const std::string& ylabel) {
   std::ostringstream g;
   g << header(png, title, "spacing h [mm]", ylabel) << "set xrange [0:*]\n";
   std::vector<std::string> plots;
   int k = 0;
-  for (const auto& [name, experiment] : series) {
+  for (const PlotSeries& ps : series) {
+    const std::string& name = ps.name;
+    const double experiment = ps.experiment;
     std::ostringstream d;
     for (const Point& p : of_series(r.observables, name)) d << gp_number(p.spacing * 1e3) << " " << gp_number(p.value * scale) << "\n";
     const std::string block = "$o" + std::to_string(k);
@@ -378,6 +380,9 @@ std::string observable_script(const Report& r, const fs::path& png, const std::s
     plots.push_back(block + " u 1:2 w lp pt 7 ps 1.4 lc rgb '" + colour + "' t " + gp_quote(name + ", simulated"));
     plots.push_back(gp_number(experiment * scale) + " w l lw 2 dt 2 lc rgb '" + colour + "' t " +
                     gp_quote(name + ", experiment " + fmt("%.4g", experiment * scale)));
+    if (std::isfinite(ps.finite_element))
+      plots.push_back(gp_number(ps.finite_element * scale) + " w l lw 2 dt 1 lc rgb '" + colour + "' t " +
+                      gp_quote(name + ", finite elements " + fmt("%.4g", ps.finite_element * scale)));
     ++k;
   }
   g << "plot ";
