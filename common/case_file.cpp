@@ -79,7 +79,7 @@ void read_numerics(const View& root, NumericsSpec& num) {
   n.range("delta", num.delta, 0, 1, Dimension::Dimensionless);
   num.cfl = n.number_or("cfl", 0.2);
   n.range("cfl", num.cfl, 0, 1, Dimension::Dimensionless, true);
-  num.integrator = n.choice("integrator", {"leapfrog", "midpoint"}, "midpoint") == "leapfrog" ? Integrator::Leapfrog
+  num.integrator = n.choice("integrator", {"leapfrog", "midpoint"}, "leapfrog") == "leapfrog" ? Integrator::Leapfrog
                                                                                             : Integrator::Midpoint;
   num.correction.max_condition = n.number_or("correction_max_condition", 1e3);
   if (!(num.correction.max_condition > 3))

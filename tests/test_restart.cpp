@@ -68,12 +68,15 @@ TEST_P(Restart, InterruptedRunContinuesBitForBit) {
   const RunResult full = run_simulation(straight, solver, opt);
   ASSERT_FALSE(full.interrupted);
 
+  // Stopped halfway, whatever the case's step factor makes of the 2 us.
+  const long stop_after = full.clock.step / 2;
+  ASSERT_GT(stop_after, 5);
   Scene stopped = wave_scene();
-  InterruptingStepper interrupting(stopped, 37);
+  InterruptingStepper interrupting(stopped, stop_after);
   opt.out_dir = root / "stopped";
   const RunResult first = run_simulation(stopped, interrupting, opt);
   ASSERT_TRUE(first.interrupted);
-  EXPECT_EQ(first.clock.step, 37);
+  EXPECT_EQ(first.clock.step, stop_after);
   EXPECT_TRUE(fs::exists(checkpoint_path(opt.out_dir)));
 
   Scene resumed = wave_scene();
@@ -121,10 +124,12 @@ TEST(RestartNonlocal, NonlocalDamageContinuesBitForBit) {
   Scene straight = nonlocal_plate_scene();
   reference::ReferenceSolver solver(straight);
   opt.out_dir = root / "straight";
-  ASSERT_FALSE(run_simulation(straight, solver, opt).interrupted);
+  const RunResult full = run_simulation(straight, solver, opt);
+  ASSERT_FALSE(full.interrupted);
 
+  // Stopped three quarters of the way (30 of the 40 us), before the first failure.
   Scene stopped = nonlocal_plate_scene();
-  InterruptingStepper interrupting(stopped, 300);
+  InterruptingStepper interrupting(stopped, full.clock.step * 3 / 4);
   opt.out_dir = root / "stopped";
   ASSERT_TRUE(run_simulation(stopped, interrupting, opt).interrupted);
   const auto failed = [](const ParticleSet& p) { return std::count_if(p.damage.begin(), p.damage.end(), [](double d) { return d >= 1; }); };

@@ -40,7 +40,7 @@ MIDPOINT_LADDER = [0.2, 0.4, 0.6, 0.8, 1.0]
 # name, case file, extra arguments, figures compared: (summary.json observable or "kinetic" for the bodies'
 # final kinetic energies, how it is judged: "relative" within 1 % of the reference, "impact" within 1 % of the
 # impact speed, "verdict" the same, "energy" within 1 % of the energy in play)
-RELATIVE, IMPACT, VERDICT, ENERGY = "relative", "impact", "verdict", "energy"
+RELATIVE, IMPACT, VERDICT, ENERGY, REPORTED = "relative", "impact", "verdict", "energy", "reported"
 KINETIC = [("kinetic", ENERGY)]
 PLATE = [("perforated", VERDICT), ("residual_velocity", IMPACT)]
 TAYLOR = [("final_length", RELATIVE), ("impact_face_diameter", RELATIVE)]
@@ -58,7 +58,7 @@ CASES = [
     ("plate-oblique", "cases/plate-8mm-oblique/case.toml", ["--spacing", "2mm", "--set", "time.end=60 us"],
      [("residual_velocity", IMPACT)]),
     ("tile", "cases/ceramic-tile/case.toml", ["--spacing", "1.5875mm"],
-     [("residual_velocity", IMPACT), ("residual_mass", RELATIVE)]),
+     [("residual_velocity", IMPACT), ("residual_mass", REPORTED)]),
     ("hard-fragments", "cases/hard/fragments.toml", [], KINETIC),
     ("hard-hypervelocity", "cases/hard/hypervelocity-al-4kms.toml", [], KINETIC),
     ("hard-oblique-45", "cases/hard/oblique-45-1000.toml", [], KINETIC),
@@ -142,6 +142,8 @@ def judge(case, s, ref):
             continue
         if how == IMPACT:
             scale = ref_impact_speed(case)
+        elif how == REPORTED:
+            continue
         elif how == ENERGY:
             scale = max(abs(rv), sum(b["kinetic_energy_J"] + b["internal_energy_J"] for b in ref["bodies"]))
         else:
@@ -215,7 +217,9 @@ def report(cases):
         "(numerics.cfl, C in dt = C min h/(c + |v|)); a ladder stops at its first failure. A run holds when it "
         f"reaches its end without a divergence, its energy drift stays within {100 * DRIFT_LIMIT:g} % and each "
         f"figure lies within {100 * FIGURE_LIMIT:g} % of the same case's leapfrog run at {REFERENCE_FACTOR:g} (the "
-        "time-converged answer; a residual velocity within 1 % of the impact speed, a verdict the same, a body's "
+        "time-converged answer; a residual velocity within 1 % of the impact speed, a verdict the same, a residual "
+        "mass reported only (at the tile's coarse spacing the rod is 39 particles of the quarter model, each 5 % "
+        "of its residual mass), a body's "
         "kinetic energy within 1 % of the energy in play). Near the ballistic limit (plate-160) the residual "
         "velocity is not a measure of the step: it moves by several m/s between any two steps, so only the "
         "verdict is judged there.",
