@@ -25,7 +25,9 @@
 # BEFORE_ARGS (further arguments of each build's search, e.g. its solver: AFTER_ARGS='--backend gpu --precision
 # float'; default none), RUNS (runs/time-to-limit), OUT (docs/speed/time-to-limit-<SPACING>mm), NOTE (what else
 # ran on the machine), BRACKET_NOTE (why FROM and TO are where they are, where they are not the default 120 / 180,
-# e.g. set from a coarser spacing's limit), REPORT_ONLY=1 (no search: the report from RUNS and the wall times
+# e.g. set from a coarser spacing's limit), BEFORE_CASE (the case file the earlier build reads, default
+# cases/plate-8mm/case.toml: the file as it stood at BEFORE_COMMIT where this one has keys that build does not
+# know, e.g. from `git worktree add`), REPORT_ONLY=1 (no search: the report from RUNS and the wall times
 # recorded there).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -48,6 +50,7 @@ SETS=${SETS:-}
 BEFORE_SETS=${BEFORE_SETS-$SETS}
 AFTER_ARGS=${AFTER_ARGS:-}
 BEFORE_ARGS=${BEFORE_ARGS:-}
+BEFORE_CASE=${BEFORE_CASE:-cases/plate-8mm/case.toml}
 RUNS=${RUNS:-runs/time-to-limit}
 OUT=${OUT:-docs/speed/time-to-limit-${SPACING}mm}
 NOTE=${NOTE:-nothing else}
@@ -72,7 +75,7 @@ search() {  # label exe sets args
   fi
   local t0 t1 status=0
   t0=$(date +%s.%N)
-  "$2" ballistic-limit cases/plate-8mm/case.toml --spacing "${SPACING}mm" --from "$FROM" --to "$TO" --tolerance "$TOL" \
+  "$2" ballistic-limit "$5" --spacing "${SPACING}mm" --from "$FROM" --to "$TO" --tolerance "$TOL" \
     --jobs "$JOBS" --set output.vtu=false "${extra[@]}" "${args[@]}" --out "$dir" | tee -a "$dir/search.log" || status=$?
   t1=$(date +%s.%N)
   # One line an invocation: its wall time (s) and the machine it ran on.
@@ -85,13 +88,13 @@ search() {  # label exe sets args
   python3 -c "import sys; print(round(sum(float(x.split()[0]) for x in open(sys.argv[1])), 1))" "$dir/elapsed_parts" \
     > "$dir/elapsed_s"
 }
-if [ "$BEFORE" != none ]; then search before "$BEFORE" "$BEFORE_SETS" "$BEFORE_ARGS"; fi
-search after "$AFTER" "$SETS" "$AFTER_ARGS"
+if [ "$BEFORE" != none ]; then search before "$BEFORE" "$BEFORE_SETS" "$BEFORE_ARGS" "$BEFORE_CASE"; fi
+search after "$AFTER" "$SETS" "$AFTER_ARGS" cases/plate-8mm/case.toml
 
 AFTER_SET=""
 if [ "$AFTER" != build/impactsph ]; then AFTER_SET="AFTER=<impactsph built at $AFTER_COMMIT> AFTER_COMMIT=$AFTER_COMMIT "; fi
 BRACKET_NOTE=${BRACKET_NOTE:-}
-export AFTER_SET NO_BEFORE AFTER_ARGS BEFORE_ARGS BRACKET_NOTE
+export AFTER_SET NO_BEFORE AFTER_ARGS BEFORE_ARGS BRACKET_NOTE BEFORE_CASE
 python3 - "$RUNS" "$SPACING" "$OUT" "$BEFORE_COMMIT" "$AFTER_COMMIT" "$NOTE" "$FROM" "$TO" "$TOL" "$JOBS" "$SETS" "$BEFORE_SETS" <<'EOF'
 import datetime, json, os, platform, sys
 runs, spacing, out, before_commit, after_commit, note, v_from, v_to, tol, jobs, sets, before_sets = sys.argv[1:]
@@ -102,6 +105,7 @@ searches = {}
 run_rows = {}
 no_before = os.environ.get("NO_BEFORE", "")
 bracket_note = os.environ.get("BRACKET_NOTE", "")
+before_case = os.environ.get("BEFORE_CASE", "cases/plate-8mm/case.toml")
 after_args = os.environ.get("AFTER_ARGS", "")
 before_args = after_args if before_commit == "none" else os.environ.get("BEFORE_ARGS", "")
 parts = {}
@@ -139,6 +143,7 @@ cmd = (f"{before_env}{after_env}SPACING={spacing} FROM={v_from} "
        (f" AFTER_ARGS='{after_args}'" if after_args else "") +
        (f" BEFORE_ARGS='{before_args}'" if before_args and before_commit != "none" else "") +
        (f" BRACKET_NOTE=\"{bracket_note}\"" if bracket_note else "") +
+       (f" BEFORE_CASE=<cases/plate-8mm/case.toml at {before_commit}>" if before_case != "cases/plate-8mm/case.toml" else "") +
        f" NOTE=\"{note}\" bash benchmarks/time-to-limit.sh")
 
 
@@ -170,6 +175,9 @@ with open(out + ".md", "w") as f:
         f.write(f"Before: `{search_command(before_sets, before_args)}`; after: "
                 f"`{search_command(sets, after_args)}`; each in turn on the same machine; the wall time is the whole "
                 "search's, from its start to its result.\n\n")
+    if before_case != "cases/plate-8mm/case.toml" and not no_before:
+        f.write(f"The earlier build read the case file as it stood at {before_commit} (this one's has keys that build "
+                "does not know); the rest of the scene is the same unless the overrides above say otherwise.\n\n")
     if bracket_note:
         f.write(f"The search starts from {v_from} and {v_to} m/s: {bracket_note}\n\n")
     for label, _ in builds:
